@@ -1,0 +1,98 @@
+#include "geometry/surface.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "geometry/polygon.h"
+
+namespace brume {
+
+namespace {
+
+void expectArgs(const SceneObject& o, size_t reals) {
+    if (!o.strings.empty() || !o.integers.empty() || o.reals.size() != reals)
+        throw Error(o.where, "bad arguments for " + o.type + " \"" + o.name + "\": expected 0 strings, 0 integers, " +
+                                 std::to_string(reals) + " reals");
+}
+
+dvec3 point(const SceneObject& o, size_t at) { return {o.reals[at], o.reals[at + 1], o.reals[at + 2]}; }
+
+void requireFinite(const SceneObject& o) {
+    for (double r : o.reals)
+        if (!std::isfinite(r)) throw Error(o.where, "non-finite argument for " + o.type + " \"" + o.name + "\"");
+}
+
+Shape sphere(const SceneObject& o) {
+    expectArgs(o, 4);
+    if (!(o.reals[3] > 0)) throw Error(o.where, "illegal radius for " + o.type + " \"" + o.name + "\"");
+    return Sphere{point(o, 0), o.reals[3], o.type == "bubble"};
+}
+
+Shape cone(const SceneObject& o) {
+    bool constantRadius = o.type == "cylinder" || o.type == "tube";
+    expectArgs(o, constantRadius ? 7 : 8);
+    double r0 = o.reals[6], r1 = constantRadius ? r0 : o.reals[7];
+    dvec3 base = point(o, 0), top = point(o, 3);
+    if (r0 < 0 || r1 < 0 || (r0 == 0 && r1 == 0))
+        throw Error(o.where, "illegal radii for " + o.type + " \"" + o.name + "\"");
+    if (glm::length(top - base) == 0) throw Error(o.where, "zero length " + o.type + " \"" + o.name + "\"");
+    return Cone{base, top, r0, r1, o.type == "cup" || o.type == "tube"};
+}
+
+Shape ring(const SceneObject& o) {
+    expectArgs(o, 8);
+    dvec3 n = point(o, 3);
+    double r0 = o.reals[6], r1 = o.reals[7];
+    if (glm::length(n) == 0) throw Error(o.where, "zero normal for ring \"" + o.name + "\"");
+    if (r0 < 0 || r1 <= r0) throw Error(o.where, "illegal radii for ring \"" + o.name + "\"");
+    return Ring{point(o, 0), glm::normalize(n), r0, r1};
+}
+
+}  // namespace
+
+bool isSurfaceType(const std::string& t) {
+    return t == "sphere" || t == "bubble" || t == "polygon" || t == "cone" || t == "cup" || t == "cylinder" ||
+           t == "tube" || t == "ring";
+}
+
+std::optional<Surface> makeSurface(const Scene& scene, int index) {
+    const SceneObject& o = scene.objects[index];
+    requireFinite(o);
+    if (o.type == "sphere" || o.type == "bubble") return Surface{index, sphere(o)};
+    if (o.type == "ring") return Surface{index, ring(o)};
+    if (o.type == "polygon") {
+        if (!o.strings.empty() || !o.integers.empty() || o.reals.size() % 3 != 0 || o.reals.size() < 9)
+            throw Error(o.where, "bad arguments for polygon \"" + o.name + "\": expected 3n reals, n >= 3");
+        std::vector<dvec3> v;
+        for (size_t i = 0; i < o.reals.size(); i += 3) v.push_back(point(o, i));
+        std::string why;
+        auto poly = makePolygon(std::move(v), why);
+        if (!poly) {
+            warn(o.where.str() + ": degenerate polygon \"" + o.name + "\" dropped (" + why + ")");
+            return std::nullopt;
+        }
+        poly->triangles = triangulate(*poly);
+        if (poly->triangles.empty()) {
+            warn(o.where.str() + ": polygon \"" + o.name + "\" crosses itself, dropped");
+            return std::nullopt;
+        }
+        return Surface{index, std::move(*poly)};
+    }
+    return Surface{index, cone(o)};
+}
+
+double area(const Shape& shape) {
+    using std::numbers::pi;
+    struct {
+        double operator()(const Sphere& s) const { return 4 * pi * s.radius * s.radius; }
+        double operator()(const Cone& c) const {
+            double slant = std::hypot(glm::length(c.top - c.base), c.topRadius - c.baseRadius);
+            return pi * (c.baseRadius + c.topRadius) * slant;
+        }
+        double operator()(const Ring& r) const { return pi * (r.outerRadius * r.outerRadius - r.innerRadius * r.innerRadius); }
+        double operator()(const Polygon& p) const { return p.area; }
+    } visit;
+    return std::visit(visit, shape);
+}
+
+}  // namespace brume

@@ -1,0 +1,29 @@
+// Scene objects that are surfaces, turned into exact shapes.
+#pragma once
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "geometry/shapes.h"
+#include "scene/scene.h"
+
+namespace brume {
+
+using Shape = std::variant<Sphere, Cone, Ring, Polygon>;
+
+struct Surface {
+    int object;  // index in Scene::objects
+    Shape shape;
+};
+
+// sphere, bubble, polygon, cone, cup, cylinder, tube, ring.
+bool isSurfaceType(const std::string& type);
+
+// The surface of scene object `index`. Throws Error (file:line) on malformed arguments; returns nullopt
+// with a warning for a degenerate surface (e.g. a polygon of zero area), which Radiance also drops.
+std::optional<Surface> makeSurface(const Scene& scene, int index);
+
+// The surface's area in scene units squared.
+double area(const Shape& shape);
+
+}  // namespace brume

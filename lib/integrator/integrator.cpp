@@ -1,0 +1,412 @@
+#include "integrator/integrator.h"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "material/ward.h"
+#include "sampling/warp.h"
+
+namespace brume {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr int kMaxCrossings = 64;     // surfaces a shadow ray may pass through
+constexpr int kSafetyDepth = 1000;    // roulette ends paths long before; this only stops pathological loops
+
+double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
+}  // namespace
+
+// How the ray being traced was chosen, which decides how it counts the light sources it meets.
+struct Integrator::PathState {
+    enum class Kind { Primary, Specular, Sampled } kind = Kind::Primary;
+    int reflections = 0;   // for -lr
+    int ambientLevel = 0;  // diffuse bounces so far, for -ab and -ad
+    double weight = 1;     // Radiance's ray weight, for -lw
+    // For sampled rays: where they left, with which density × count (for MIS) and that point's weight.
+    dvec3 from{0};
+    double sampledDensity = 0;
+    double fromWeight = 1;
+    int depth = 0;
+};
+
+struct Integrator::Context {
+    Random rng;
+};
+
+Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
+    : scene_(scene), settings_(settings) {
+    runSeed_ = settings.randomSampling
+                   ? mixBits(static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()))
+                   : settings.seed;
+    const SceneGeometry& g = scene.geometry();
+    double size = g.boundsMin().x <= g.boundsMax().x ? glm::length(g.boundsMax() - g.boundsMin()) : 1.0;
+    epsilon_ = 1e-7 * size;
+}
+
+uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
+
+RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance) const {
+    Context ctx{Random(seedFor(index), index)};
+    RayRecord rec;
+    rec.point = org;
+    Ray ray{org, glm::normalize(dir)};
+    if (maxDistance > 0) ray.tmax = maxDistance;
+    rec.value = radiance(ray, PathState{}, ctx, &rec, nullptr);
+    return rec;
+}
+
+// Irradiance as Radiance's -I computes it: a white Lambertian sensor of reflectance π, so that its
+// outgoing "radiance" is the irradiance E itself.
+RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t index) const {
+    Context ctx{Random(seedFor(index), index)};
+    dvec3 n = glm::normalize(normal);
+    double offset = epsilon_ + 4e-7 * std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    Shading sh{p + offset * n, n, -n, 1.0, false, false, 0.0};
+    Lobes lobes;
+    lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
+    RayRecord rec;
+    rec.point = p;
+    rec.normal = n;
+    rec.value = shade(sh, lobes, -1, PathState{}, ctx, nullptr);
+    return rec;
+}
+
+RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index) const {
+    Ray ray{org, glm::normalize(dir)};
+    RayRecord rec;
+    rec.point = org;
+    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+        auto hit = scene_.geometry().intersect(ray);
+        if (!hit) return trace(org, dir, index);  // escapes: what it sees is the value
+        int mat = scene_.materialObject(hit->surface);
+        const SceneObject& m = scene_.scene().objects[mat];
+        bool transparent = m.type == "glass" || m.type == "trans" || m.type == "dielectric" ||
+                           (m.type == "illum" && scene_.emitter(mat)->alternate < 0);
+        if (transparent) {
+            ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
+            continue;
+        }
+        if (scene_.emitter(mat)) return trace(org, dir, index);
+        dvec3 n = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
+        Context ctx{Random(seedFor(index), index)};
+        Shading sh{hit->point, n, -n, 1.0, false, false, hit->t};
+        Lobes lobes;
+        lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
+        rec.value = shade(sh, lobes, hit->surface, PathState{}, ctx, nullptr);
+        rec.firstLength = rec.effectiveLength = glm::length(hit->point - org);
+        rec.point = hit->point;
+        rec.normal = n;
+        rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
+        rec.modifierObject = mat;
+        return rec;
+    }
+    return rec;
+}
+
+Spectrum Integrator::radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
+                              Spectrum* misEmission) const {
+    auto hit = scene_.geometry().intersect(ray);
+    if (!hit) return escaped(ray, state, misEmission);
+    const Surface& surface = scene_.geometry().surfaces()[hit->surface];
+    int mat = scene_.materialObject(hit->surface);
+    bool back = glm::dot(hit->normal, ray.dir) > 0;
+    Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir,
+               std::abs(glm::dot(hit->normal, ray.dir)), back,
+               std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape), hit->t};
+    if (record) {
+        record->firstLength = record->effectiveLength = hit->t;
+        record->point = hit->point;
+        record->normal = sh.normal;
+        record->surfaceObject = surface.object;
+        record->modifierObject = mat;
+    }
+    if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, *hit, sh, *e, state, ctx, record, misEmission);
+    Lobes lobes;
+    if (!scene_.material(mat)->scatter(sh, lobes)) return passThrough(ray, *hit, state, ctx, record, misEmission);
+    return shade(sh, lobes, hit->surface, state, ctx, record) * lobes.incomingAttenuation;
+}
+
+Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
+                                 RayRecord* record, Spectrum* misEmission) const {
+    if (state.depth > kSafetyDepth) return Spectrum(0.f);
+    PathState next = state;
+    ++next.depth;
+    Ray on{hit.point, ray.dir, std::numeric_limits<double>::infinity(), hit.surface};
+    RayRecord child;
+    Spectrum value = radiance(on, next, ctx, record ? &child : nullptr, misEmission);
+    if (record) {
+        double first = record->firstLength;
+        *record = child;
+        record->firstLength += first;
+        record->effectiveLength += first;
+    }
+    return value;
+}
+
+double Integrator::misWeightForLight(const Light& light, const PathState& state, const Ray& ray,
+                                     const SurfaceHit* hit) const {
+    double dist = hit ? hit->t : std::numeric_limits<double>::infinity();
+    dvec3 normal = hit ? hit->normal : dvec3(0);
+    double lightDensity = light.pdf(state.from, ray.dir, dist, normal) *
+                          light.sampleCount(state.from, settings_.sourceSubdivision, state.fromWeight);
+    return powerHeuristic(state.sampledDensity, lightDensity);
+}
+
+Spectrum Integrator::escaped(const Ray& ray, const PathState& state, Spectrum* misEmission) const {
+    // Radiance's order: real sources first, then glows (skies).
+    for (bool glows : {false, true}) {
+        for (int li : scene_.distantLights()) {
+            const Light& light = scene_.lights()[li];
+            const Emitter& e = light.emitter();
+            if ((e.kind == Emitter::Kind::Glow) != glows || !light.distantContains(ray.dir)) continue;
+            if (e.kind == Emitter::Kind::Illum) {
+                if (state.kind == PathState::Kind::Sampled) return Spectrum(0.f);
+                continue;
+            }
+            if (!settings_.directVisible && !glows) return Spectrum(0.f);
+            Spectrum le = e.emitted(-ray.dir);
+            if (glows || state.kind != PathState::Kind::Sampled) return le;
+            if (misEmission) *misEmission += le * float(misWeightForLight(light, state, ray, nullptr));
+            return Spectrum(0.f);
+        }
+    }
+    return Spectrum(0.f);
+}
+
+Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const Emitter& e,
+                                const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const {
+    if (e.kind == Emitter::Kind::Illum) {
+        // Seen by rays, an illum is its alternate material, or nothing at all.
+        if (e.alternate < 0) return passThrough(ray, hit, state, ctx, record, misEmission);
+        Lobes lobes;
+        const Material* alt = scene_.material(e.alternate);
+        if (!alt || !alt->scatter(sh, lobes)) return passThrough(ray, hit, state, ctx, record, misEmission);
+        return shade(sh, lobes, hit.surface, state, ctx, record) * lobes.incomingAttenuation;
+    }
+    if (sh.backside) {  // emitters radiate from their front only
+        if (settings_.materials.backVisible) return Spectrum(0.f);
+        return passThrough(ray, hit, state, ctx, record, misEmission);
+    }
+    bool distantGlow = e.kind == Emitter::Kind::Glow && e.glowRadius >= 0 && hit.t > e.glowRadius;
+    if (!settings_.directVisible && !distantGlow) return Spectrum(0.f);
+    Spectrum le = e.emitted(-ray.dir);
+    if (state.kind != PathState::Kind::Sampled) return le;
+    if (e.kind == Emitter::Kind::Glow) return distantGlow ? le : Spectrum(0.f);  // near ones: next-event's job
+    int li = scene_.lightOfSurface(hit.surface);
+    if (li < 0) return le;  // not sampled as a source: only paths find it
+    if (misEmission) *misEmission += le * float(misWeightForLight(scene_.lights()[li], state, ray, &hit));
+    return Spectrum(0.f);
+}
+
+bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
+                       float& boost) const {
+    double w = std::min(1.0, double(coef.maxValue()));
+    child = parent;
+    child.weight = parent.weight * w;
+    child.reflections = parent.reflections + (reflection ? 1 : 0);
+    child.depth = parent.depth + 1;
+    boost = 1.f;
+    if (!(child.weight > 0) || child.depth > kSafetyDepth) return false;
+    int lr = settings_.maxReflections;
+    if (lr > 0) return child.weight >= settings_.minWeight && child.reflections <= lr;
+    // Unbiased termination: below -lw by weight, past |lr| reflections by reflectance.
+    double survive = 1;
+    if (child.weight < settings_.minWeight) survive = child.weight / settings_.minWeight;
+    if (lr < 0 && child.reflections > -lr) survive *= std::min(0.95, w);
+    if (survive < 1) {
+        if (ctx.rng.uniform() >= survive) return false;
+        boost = float(1 / survive);
+        child.weight /= survive;
+    }
+    return true;
+}
+
+Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
+                           RayRecord* record) const {
+    Spectrum value(0.f);
+    double strongest = 0;
+    for (int k = 0; k < lobes.deltaCount; ++k) {
+        const DeltaLobe& d = lobes.delta[k];
+        PathState child;
+        float boost;
+        if (!spawn(state, child, d.weight, !d.transmits, ctx, boost)) continue;
+        child.kind = PathState::Kind::Specular;
+        RayRecord childRecord;
+        Spectrum li = radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
+                               child, ctx, record ? &childRecord : nullptr, nullptr);
+        Spectrum part = d.weight * li * boost;
+        value += part;
+        if (record) {
+            double b = brightness(part);
+            if (!d.transmits) {
+                record->mirrored += part;
+                record->mirroredLength = record->firstLength + childRecord.effectiveLength;
+            }
+            if (b > strongest) {
+                strongest = b;
+                record->effectiveLength = record->firstLength + childRecord.effectiveLength;
+            }
+        }
+    }
+    bool diffuseOrGlossy = !lobes.diffuse.isBlack() || !lobes.diffuseTrans.isBlack() || !lobes.glossy.isBlack() ||
+                           !lobes.glossyTrans.isBlack();
+    if (diffuseOrGlossy) value += direct(sh, lobes, surface, state, ctx);
+    if (lobes.sampleGlossy || lobes.sampleGlossyTrans) value += glossy(sh, lobes, surface, state, ctx);
+    value += ambient(sh, lobes, surface, state, ctx);
+    if (record && brightness(value) > 0 && strongest < 0.5 * brightness(value))
+        record->effectiveLength = record->firstLength;
+    return value.clampFinite();
+}
+
+// Every source sample, weighted against the lobes that are also sampled by rays (power heuristic).
+Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+                            Context& ctx) const {
+    Spectrum sum(0.f);
+    dvec3 wo = -sh.dir;
+    bool diffuseSampled = state.ambientLevel < settings_.ambientBounces;
+    int diffuseCount = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
+    for (const Light& light : scene_.lights()) {
+        const Emitter& e = light.emitter();
+        if (!e.isDirectSource() || light.surface() == surface) continue;
+        int count = light.sampleCount(sh.point, settings_.sourceSubdivision, state.weight);
+        uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+        for (int k = 0; k < count; ++k) {
+            double u, v;
+            sobol2D(k, scramble, u, v);
+            auto s = light.sample(sh.point, u, v);
+            if (!s || s->radiance.isBlack()) continue;
+            if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
+            double cosL = glm::dot(sh.normal, s->dir);
+            double lightDensity = s->pdf * count;
+            Spectrum f(0.f);
+            auto add = [&](const Spectrum& coef, double brdf, bool sampled, double density) {
+                double w = sampled ? powerHeuristic(lightDensity, density) : 1.0;
+                f += coef * float(brdf * std::abs(cosL) * w);
+            };
+            if (cosL > 0) {
+                double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(cosL) : 1.0;
+                if (!lobes.diffuse.isBlack())
+                    add(lobes.diffuse, fresnel / kPi, diffuseSampled, diffuseCount * cosL / kPi);
+                if (!lobes.glossy.isBlack())
+                    add(lobes.glossy, wardBrdf(wo, s->dir, sh.normal, lobes.alpha2), lobes.sampleGlossy,
+                        wardPdf(wo, s->dir, sh.normal, lobes.alpha2));
+            } else if (cosL < 0) {
+                double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(-cosL) : 1.0;
+                if (!lobes.diffuseTrans.isBlack())
+                    add(lobes.diffuseTrans, fresnel / kPi, diffuseSampled, -diffuseCount * cosL / kPi);
+                if (!lobes.glossyTrans.isBlack())
+                    add(lobes.glossyTrans, gaussianBtdf(sh.dir, s->dir, lobes.alphaT2, sh.cosine, -cosL),
+                        lobes.sampleGlossyTrans, gaussianTransmissionPdf(sh.dir, s->dir, lobes.alphaT2));
+            }
+            if (f.isBlack()) continue;
+            Spectrum le = s->radiance;
+            // Radiance's spotlight focus: the source acts as if it were f farther behind its surface.
+            if (e.kind == Emitter::Kind::Spotlight && std::isfinite(s->distance))
+                le *= float(s->distance * s->distance / ((s->distance + e.spotFocus) * (s->distance + e.spotFocus)));
+            Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
+                                             light, ctx);
+            if (!t.isBlack()) sum += f * le * t * float(1 / lightDensity);
+        }
+    }
+    return sum;
+}
+
+// What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
+// clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
+Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, Context& ctx) const {
+    Spectrum t(1.f);
+    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+        auto hit = scene_.geometry().intersect(ray);
+        if (!hit) return light.isDistant() ? t : Spectrum(0.f);
+        if (hit->surface == light.surface()) return t;
+        int mat = scene_.materialObject(hit->surface);
+        const Emitter* e = scene_.emitter(mat);
+        if (e && (e->kind != Emitter::Kind::Illum)) return Spectrum(0.f);
+        if (!e) {
+            bool back = glm::dot(hit->normal, ray.dir) > 0;
+            Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir, std::abs(glm::dot(hit->normal, ray.dir)),
+                       back, false, hit->t};
+            dvec3 dir = ray.dir;
+            t *= scene_.material(mat)->shadowTransmission(sh, dir);
+            if (t.maxValue() <= 1e-6f) return Spectrum(0.f);
+            ray.dir = dir;
+        }
+        ray.org = hit->point;
+        ray.leaving = hit->surface;
+    }
+    return Spectrum(0.f);
+}
+
+// One ray per sampled glossy lobe, weighted against next-event estimation where it meets a source.
+Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+                            Context& ctx) const {
+    Spectrum sum(0.f);
+    dvec3 wo = -sh.dir;
+    for (bool transmit : {false, true}) {
+        if (!(transmit ? lobes.sampleGlossyTrans : lobes.sampleGlossy)) continue;
+        const Spectrum& coef = transmit ? lobes.glossyTrans : lobes.glossy;
+        double alpha2 = transmit ? lobes.alphaT2 : lobes.alpha2;
+        PathState child;
+        float boost;
+        if (!spawn(state, child, coef, !transmit, ctx, boost)) continue;
+        double u = ctx.rng.uniform(), v = ctx.rng.uniform();
+        dvec3 wi = transmit ? sampleGaussianTransmission(sh.dir, alpha2, u, v) : sampleWard(wo, sh.normal, alpha2, u, v);
+        double cosI = glm::dot(wi, sh.normal);
+        if (transmit ? cosI >= 0 : cosI <= 0) continue;  // the sample left the lobe's side: no contribution
+        double pdf = transmit ? gaussianTransmissionPdf(sh.dir, wi, alpha2) : wardPdf(wo, wi, sh.normal, alpha2);
+        double f = transmit ? gaussianBtdf(sh.dir, wi, alpha2, sh.cosine, -cosI) : wardBrdf(wo, wi, sh.normal, alpha2);
+        if (!(pdf > 0)) continue;
+        child.kind = PathState::Kind::Sampled;
+        child.from = sh.point;
+        child.fromWeight = state.weight;
+        child.sampledDensity = pdf;
+        Spectrum emission(0.f);
+        Spectrum li = radiance(Ray{sh.point, wi, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,
+                               &emission);
+        sum += coef * (li + emission) * float(f * std::abs(cosI) / pdf * boost);
+    }
+    return sum;
+}
+
+// Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified
+// paths at the first bounce and one after it, for -ab bounces; beyond them Radiance's -av value.
+Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+                             Context& ctx) const {
+    Spectrum sum(0.f);
+    for (bool transmit : {false, true}) {
+        const Spectrum& coef = transmit ? lobes.ambientTrans : lobes.ambient;
+        if (coef.isBlack()) continue;
+        if (state.ambientLevel >= settings_.ambientBounces) {
+            sum += coef * settings_.ambientValue;
+            continue;
+        }
+        PathState child;
+        float boost;
+        if (!spawn(state, child, coef, !transmit, ctx, boost)) continue;
+        const Spectrum& diffuse = transmit ? lobes.diffuseTrans : lobes.diffuse;
+        int count = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
+        child.kind = PathState::Kind::Sampled;
+        child.ambientLevel = state.ambientLevel + 1;
+        child.from = sh.point;
+        child.fromWeight = state.weight;
+        Frame frame(transmit ? -sh.normal : sh.normal);
+        uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+        Spectrum paths(0.f), emission(0.f);
+        for (int i = 0; i < count; ++i) {
+            double u, v;
+            sobol2D(i, scramble, u, v);
+            dvec3 local = cosineHemisphere(u, v);
+            child.sampledDensity = count * local.z / kPi;
+            Spectrum e(0.f);
+            paths += radiance(Ray{sh.point, frame.toWorld(local), std::numeric_limits<double>::infinity(), surface},
+                              child, ctx, nullptr, &e);
+            if (!e.isBlack()) emission += e * float(lobes.fresnelDiffuse ? 1 - fresnelEstimate(local.z) : 1.0);
+        }
+        // Sources found by these paths count for the diffuse lobe only: glossy light is next-event's.
+        sum += (coef * paths + diffuse * emission) * float(boost / count);
+    }
+    return sum;
+}
+
+}  // namespace brume

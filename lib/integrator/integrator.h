@@ -1,0 +1,65 @@
+// Radiance values along rays, as Radiance's rtrace defines them, computed without bias: next-event
+// estimation of every source with multiple importance sampling, diffuse interreflection by path tracing
+// (-ad paths at the first bounce, one after it, -ab bounces), specular and glossy rays, Russian roulette.
+#pragma once
+#include <limits>
+
+#include "integrator/render_scene.h"
+#include "integrator/settings.h"
+#include "sampling/random.h"
+
+namespace brume {
+
+// What rtrace can report about one ray (its -o letters).
+struct RayRecord {
+    Spectrum value{0.f};
+    double firstLength = std::numeric_limits<double>::infinity();      // L: to the first surface
+    double effectiveLength = std::numeric_limits<double>::infinity();  // l: through specular pass-throughs
+    dvec3 point{0};                                                     // p
+    dvec3 normal{0};                                                    // n and N (no perturbation yet)
+    int surfaceObject = -1;   // s
+    int modifierObject = -1;  // m
+    Spectrum mirrored{0.f};   // r: the part of value that came by specular reflection
+    double mirroredLength = std::numeric_limits<double>::infinity();  // x
+};
+
+class Integrator {
+public:
+    Integrator(const RenderScene& scene, const RenderSettings& settings);
+
+    // Radiance arriving at org from direction dir (the ray's value). `index` seeds the ray's samples;
+    // maxDistance > 0 limits how far the ray looks (rtrace -ld).
+    RayRecord trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance = 0) const;
+    // Irradiance at point p on a surface facing n (rtrace -I).
+    RayRecord irradiance(const dvec3& p, const dvec3& n, uint64_t index) const;
+    // Irradiance at the first opaque surface the ray meets; light sources give their radiance (rtrace -i).
+    RayRecord irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index) const;
+
+private:
+    struct PathState;
+    struct Context;
+    Spectrum radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
+                      Spectrum* misEmission) const;
+    Spectrum escaped(const Ray& ray, const PathState& state, Spectrum* misEmission) const;
+    Spectrum emitterHit(const Ray& ray, const struct SurfaceHit& hit, const struct Shading& sh, const Emitter& e,
+                        const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
+    Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
+                         RayRecord* record, Spectrum* misEmission) const;
+    Spectrum shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
+                   RayRecord* record) const;
+    Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
+    Spectrum ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
+    Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
+    Spectrum shadowTransmittance(Ray ray, const Light& light, Context& ctx) const;
+    bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
+               float& boost) const;
+    double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
+    uint64_t seedFor(uint64_t index) const;
+
+    const RenderScene& scene_;
+    RenderSettings settings_;
+    uint64_t runSeed_;
+    double epsilon_;  // offset for sensor points off their surface, relative to the scene size
+};
+
+}  // namespace brume

@@ -1,0 +1,89 @@
+#include "integrator/render_scene.h"
+
+#include <numbers>
+#include <set>
+
+namespace brume {
+
+namespace {
+
+// Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
+const std::set<std::string> kPlannedTypes{
+    "brightfunc", "colorfunc", "brightdata", "colordata", "colorpict", "brighttext", "colortext", "texfunc",
+    "texdata", "mixfunc", "mixdata", "mixpict", "mixtext", "mesh", "instance", "mist", "spectrum", "specfile",
+    "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2", "WGMDfunc", "interface",
+    "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
+    "brtdfunc", "antimatter"};
+
+}  // namespace
+
+RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) : scene_(scene) {
+    checkTypes();
+    materials_ = makeMaterials(scene, settings);
+    emitters_.resize(scene.objects.size());
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        if (isEmitterType(scene.objects[i].type))
+            emitters_[i] = std::make_unique<Emitter>(makeEmitter(scene, scene.objects[i]));
+
+    std::vector<Surface> surfaces;
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (!isSurfaceType(o.type)) continue;
+        if (o.modifier < 0) continue;  // a void surface is never seen (Radiance drops it too)
+        auto surface = makeSurface(scene, i);
+        if (!surface) continue;
+        surfaces.push_back(std::move(*surface));
+        surfaceMaterial_.push_back(o.modifier);
+    }
+    geometry_ = std::make_unique<SceneGeometry>(std::move(surfaces));
+    addSources();
+}
+
+void RenderScene::checkTypes() const {
+    for (const SceneObject& o : scene_.objects) {
+        if (isSurfaceType(o.type) || isMaterialType(o.type) || isEmitterType(o.type) || o.type == "source") continue;
+        if (kPlannedTypes.count(o.type))
+            throw Error(o.where, "type '" + o.type + "' (" + o.name + ") is not supported by Brume yet");
+        throw Error(o.where, "unknown object type '" + o.type + "' (" + o.name + ")");
+    }
+    for (const SceneObject& o : scene_.objects) {
+        if (o.modifier < 0) continue;
+        const SceneObject& m = scene_.objects[o.modifier];
+        if (!isMaterialType(m.type) && !isEmitterType(m.type))
+            throw Error(o.where, "modifier '" + m.name + "' of " + o.type + " \"" + o.name + "\" is a " + m.type +
+                                     ", not a material");
+    }
+}
+
+void RenderScene::addSources() {
+    const auto& surfaces = geometry_->surfaces();
+    surfaceLight_.assign(surfaces.size(), -1);
+    for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
+        const Emitter* e = emitters_[surfaceMaterial_[s]].get();
+        if (!e || !e->isDirectSource() || e->radiance.maxValue() <= 1e-6f) continue;
+        const SceneObject& o = scene_.objects[surfaces[s].object];
+        const auto* cone = std::get_if<Cone>(&surfaces[s].shape);
+        const auto* sphere = std::get_if<Sphere>(&surfaces[s].shape);
+        if ((cone && (cone->inward || cone->baseRadius != cone->topRadius)) || (sphere && sphere->inward))
+            throw Error(o.where, "illegal source shape " + o.type + " \"" + o.name +
+                                     "\": light sources are polygons, rings, spheres, cylinders or sources");
+        surfaceLight_[s] = static_cast<int>(lights_.size());
+        lights_.emplace_back(surfaces[s], s, e);
+    }
+    for (int i = 0; i < static_cast<int>(scene_.objects.size()); ++i) {
+        const SceneObject& o = scene_.objects[i];
+        if (o.type != "source" || o.modifier < 0) continue;
+        if (!o.strings.empty() || !o.integers.empty() || o.reals.size() != 4)
+            throw Error(o.where, "bad arguments for source \"" + o.name + "\": expected 4 reals");
+        const Emitter* e = emitters_[o.modifier].get();
+        if (!e) throw Error(o.where, "source \"" + o.name + "\" needs a light, glow, illum or spotlight modifier");
+        dvec3 dir(o.reals[0], o.reals[1], o.reals[2]);
+        double angle = o.reals[3] * std::numbers::pi / 180;
+        if (!(glm::length(dir) > 0) || !(angle > 0))
+            throw Error(o.where, "bad direction or angle for source \"" + o.name + "\"");
+        distant_.push_back(static_cast<int>(lights_.size()));
+        lights_.emplace_back(dir, angle, e, i);
+    }
+}
+
+}  // namespace brume

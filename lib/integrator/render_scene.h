@@ -1,0 +1,44 @@
+// The scene compiled for rendering: exact geometry in Embree, the material or emitter of every surface,
+// and the light sources for next-event estimation.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "geometry/scene_geometry.h"
+#include "light/light.h"
+#include "material/material.h"
+
+namespace brume {
+
+class RenderScene {
+public:
+    // Throws Error (file:line) for objects of unknown types, types Brume does not have yet, bad arguments.
+    RenderScene(const Scene& scene, const MaterialSettings& settings);
+
+    const Scene& scene() const { return scene_; }
+    const SceneGeometry& geometry() const { return *geometry_; }
+    const std::vector<Light>& lights() const { return lights_; }
+
+    // The object that shades surface s: a material or an emitter (its modifier after aliases).
+    int materialObject(int surface) const { return surfaceMaterial_[surface]; }
+    const Material* material(int object) const { return materials_[object].get(); }
+    const Emitter* emitter(int object) const { return emitters_[object].get(); }
+    // The light that samples surface s, or -1.
+    int lightOfSurface(int surface) const { return surfaceLight_[surface]; }
+    // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
+    const std::vector<int>& distantLights() const { return distant_; }
+
+private:
+    void checkTypes() const;
+    void addSources();
+
+    const Scene& scene_;
+    std::vector<std::unique_ptr<Material>> materials_;
+    std::vector<std::unique_ptr<Emitter>> emitters_;
+    std::unique_ptr<SceneGeometry> geometry_;
+    std::vector<int> surfaceMaterial_, surfaceLight_;
+    std::vector<Light> lights_;
+    std::vector<int> distant_;  // indices into lights_
+};
+
+}  // namespace brume

@@ -1,0 +1,33 @@
+// Everything on the command line that changes computed values (the -a, -d, -l, -s, -b and -u options).
+#pragma once
+#include <cstdint>
+
+#include "material/material.h"
+#include "spectrum/spectrum.h"
+
+namespace brume {
+
+struct RenderSettings {
+    int ambientBounces = 0;          // -ab: diffuse interreflections, exactly
+    int ambientDivisions = 1024;     // -ad: paths per shading point at the first bounce
+    int ambientSupersamples = 512;   // -as (irradiance cache, later)
+    double ambientAccuracy = 0.1;    // -aa (irradiance cache, later; 0 = path tracing)
+    int ambientResolution = 256;     // -ar (irradiance cache, later)
+    int ambientWeight = 0;           // -aw
+    Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce
+    int maxReflections = -10;        // -lr: > 0 hard limit; ≤ 0 Russian roulette past |lr| reflections
+    double minWeight = 1e-4;         // -lw: rays below this weight are played by Russian roulette
+    double sourceSubdivision = 0.2;  // -ds: more shadow rays for sources larger than this, seen from a point
+    double sourceJitter = 0;         // -dj (sources are always sampled stratified; kept for compatibility)
+    double directThreshold = 0.03;   // -dt (every source sample is tested; kept for compatibility)
+    double directCertainty = 0.75;   // -dc
+    int directRelays = 2;            // -dr (virtual sources through mirrors: not yet)
+    int directPresamples = 512;      // -dp
+    bool directVisible = true;       // -dv: light sources seen by rays
+    double specularJitter = 1;       // -ss
+    MaterialSettings materials;      // -st, -bv
+    bool randomSampling = true;      // -u: a new seed each run; -u- a fixed one
+    uint64_t seed = 0;               // used when -u-
+};
+
+}  // namespace brume

@@ -1,0 +1,36 @@
+// Radiance's light-emitting materials: light, spotlight, glow and illum (reference manual §"Light
+// Sources"). Emitters radiate from the front of their surface only, without a cosine falloff.
+#pragma once
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "geometry/ray.h"
+#include "scene/scene.h"
+#include "spectrum/spectrum.h"
+
+namespace brume {
+
+struct Emitter {
+    enum class Kind { Light, Spotlight, Glow, Illum };
+    Kind kind = Kind::Light;
+    Spectrum radiance;
+    double glowRadius = 0;    // glow: a source only for points within this distance (≤ 0: never)
+    double spotCosHalf = -1;  // spotlight: cosine of half the cone angle
+    dvec3 spotAxis{0, 0, 1};  // spotlight: unit aim direction
+    double spotFocus = 0;     // spotlight: distance of the focus behind the source (aim vector length)
+    int alternate = -1;       // illum: scene object of the alternate material, -1 when invisible
+
+    // Radiance emitted in direction `out` (unit, away from the surface's front); spotlights cut off hard.
+    Spectrum emitted(const dvec3& out) const {
+        if (kind == Kind::Spotlight && glm::dot(out, spotAxis) < spotCosHalf) return Spectrum(0.f);
+        return radiance;
+    }
+    // Whether next-event estimation samples it (glow only within its radius; see Radiance's glow).
+    bool isDirectSource() const { return kind != Kind::Glow || glowRadius > 0; }
+};
+
+// The emitter described by scene object `o` (a light, spotlight, glow or illum). Throws Error on bad
+// arguments. `scene` resolves illum's alternate material.
+Emitter makeEmitter(const Scene& scene, const SceneObject& o);
+
+}  // namespace brume

@@ -1,0 +1,127 @@
+#include "light/light.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "sampling/warp.h"
+
+namespace brume {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// 1 − cos of the half-angle under which a sphere of radius r is seen from distance d > r, without
+// cancellation for small spheres.
+double sphereOneMinusCos(double r, double d) {
+    double sin2 = (r / d) * (r / d);
+    return sin2 / (1 + std::sqrt(std::max(0.0, 1 - sin2)));
+}
+}  // namespace
+
+Light::Light(const Surface& surface, int surfaceIndex, const Emitter* emitter)
+    : shape_(&surface.shape), surface_(surfaceIndex), object_(surface.object), emitter_(emitter) {
+    area_ = area(surface.shape);
+    size_ = std::sqrt(area_);
+    if (const auto* s = std::get_if<Sphere>(shape_)) center_ = s->center, size_ = 2 * s->radius;
+    else if (const auto* c = std::get_if<Cone>(shape_)) center_ = 0.5 * (c->base + c->top);
+    else if (const auto* r = std::get_if<Ring>(shape_)) center_ = r->center;
+    if (const auto* poly = std::get_if<Polygon>(shape_)) {
+        double sum = 0;
+        for (const auto& t : poly->triangles) {
+            const auto& v = poly->vertices;
+            sum += 0.5 * glm::length(glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]));
+            triangleCdf_.push_back(sum);
+        }
+        for (double& c : triangleCdf_) c /= sum;
+        for (const dvec3& v : poly->vertices) center_ += v / double(poly->vertices.size());
+    }
+}
+
+Light::Light(const dvec3& direction, double angle, const Emitter* emitter, int object)
+    : object_(object), emitter_(emitter), direction_(glm::normalize(direction)) {
+    double half = std::min(angle, kPi) / 2;
+    oneMinusCos_ = 2 * std::sin(half / 2) * std::sin(half / 2);
+}
+
+bool Light::distantContains(const dvec3& d) const { return 1 - glm::dot(d, direction_) <= oneMinusCos_; }
+
+int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
+    if (ratio <= 0) return 1;
+    double angularSize = isDistant() ? 2 * std::sqrt(2 * oneMinusCos_) : size_ / std::max(glm::length(center_ - p), 1e-300);
+    int n = static_cast<int>(std::ceil(std::min(8.0, angularSize * weight / ratio)));
+    return std::max(1, n * n);
+}
+
+void Light::pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const {
+    if (const auto* poly = std::get_if<Polygon>(shape_)) {
+        size_t t = std::lower_bound(triangleCdf_.begin(), triangleCdf_.end(), u) - triangleCdf_.begin();
+        t = std::min(t, triangleCdf_.size() - 1);
+        double lo = t ? triangleCdf_[t - 1] : 0.0;
+        u = std::clamp((u - lo) / (triangleCdf_[t] - lo), 0.0, 1.0);  // reuse u within the triangle
+        double b0, b1;
+        uniformTriangle(u, v, b0, b1);
+        const auto& tri = poly->triangles[t];
+        const auto& vs = poly->vertices;
+        point = b0 * vs[tri[0]] + b1 * vs[tri[1]] + (1 - b0 - b1) * vs[tri[2]];
+        normal = poly->normal;
+    } else if (const auto* ring = std::get_if<Ring>(shape_)) {
+        double r2in = ring->innerRadius * ring->innerRadius, r2out = ring->outerRadius * ring->outerRadius;
+        double r = std::sqrt(r2in + u * (r2out - r2in)), phi = 2 * kPi * v;
+        Frame f(ring->normal);
+        point = ring->center + r * (std::cos(phi) * f.s + std::sin(phi) * f.t);
+        normal = ring->normal;
+    } else {
+        const auto& c = std::get<Cone>(*shape_);  // a cylinder: lights on cones are refused earlier
+        dvec3 axis = c.top - c.base;
+        Frame f(glm::normalize(axis));
+        double phi = 2 * kPi * v;
+        normal = std::cos(phi) * f.s + std::sin(phi) * f.t;
+        point = c.base + u * axis + c.baseRadius * normal;
+        if (c.inward) normal = -normal;
+    }
+}
+
+std::optional<LightSample> Light::sampleArea(const dvec3& p, double u, double v) const {
+    dvec3 x, n;
+    pointOnSurface(u, v, x, n);
+    dvec3 toLight = x - p;
+    double dist = glm::length(toLight);
+    if (!(dist > 0)) return std::nullopt;
+    dvec3 dir = toLight / dist;
+    double cosLight = -glm::dot(n, dir);
+    if (cosLight <= 0) return std::nullopt;  // emitters radiate from their front only
+    return LightSample{dir, dist, dist * dist / (area_ * cosLight), emitter_->emitted(-dir)};
+}
+
+std::optional<LightSample> Light::sample(const dvec3& p, double u, double v) const {
+    if (isDistant()) {
+        dvec3 dir = Frame(direction_).toWorld(uniformCone(u, v, oneMinusCos_));
+        return LightSample{dir, std::numeric_limits<double>::infinity(), 1 / (2 * kPi * oneMinusCos_),
+                           emitter_->emitted(-dir)};
+    }
+    const auto* sphere = std::get_if<Sphere>(shape_);
+    if (!sphere) return sampleArea(p, u, v);
+    // Uniform over the cone the sphere subtends: exact solid angle, no wasted samples on its far side.
+    dvec3 toCenter = sphere->center - p;
+    double dc = glm::length(toCenter);
+    if (dc <= sphere->radius) return std::nullopt;
+    double omc = sphereOneMinusCos(sphere->radius, dc);
+    dvec3 dir = Frame(toCenter / dc).toWorld(uniformCone(u, v, omc));
+    // Distance to the near side of the sphere along dir.
+    double b = glm::dot(dir, toCenter);
+    double h2 = std::max(0.0, sphere->radius * sphere->radius - (dc * dc - b * b));
+    double dist = b - std::sqrt(h2);
+    return LightSample{dir, dist, 1 / (2 * kPi * omc), emitter_->emitted(-dir)};
+}
+
+double Light::pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3& hitNormal) const {
+    if (isDistant()) return distantContains(dir) ? 1 / (2 * kPi * oneMinusCos_) : 0;
+    if (const auto* sphere = std::get_if<Sphere>(shape_)) {
+        double dc = glm::length(sphere->center - p);
+        return dc > sphere->radius ? 1 / (2 * kPi * sphereOneMinusCos(sphere->radius, dc)) : 0;
+    }
+    double cosLight = -glm::dot(hitNormal, dir);
+    return cosLight > 0 ? distance * distance / (area_ * cosLight) : 0;
+}
+
+}  // namespace brume

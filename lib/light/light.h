@@ -1,0 +1,59 @@
+// Light sources for next-event estimation: emitting surfaces (polygon, ring, sphere, cylinder) and
+// sources at infinity (`source`, e.g. the sun). Each is sampled with a density in solid angle that the
+// integrator also evaluates for multiple importance sampling.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "geometry/surface.h"
+#include "light/emitter.h"
+
+namespace brume {
+
+struct LightSample {
+    dvec3 dir;        // unit, from the shading point toward the source
+    double distance;  // to the sampled point (infinity for distant sources)
+    double pdf;       // per unit solid angle
+    Spectrum radiance;
+};
+
+class Light {
+public:
+    // An emitting surface; `surface` is its index in SceneGeometry::surfaces().
+    Light(const Surface& surface, int surfaceIndex, const Emitter* emitter);
+    // A source at infinity: unit direction and full cone angle in radians.
+    Light(const dvec3& direction, double angle, const Emitter* emitter, int object);
+
+    // Radiance-like subdivision: more samples for a source large as seen from p (-ds ratio, ray weight).
+    int sampleCount(const dvec3& p, double ratio, double weight) const;
+    // A direction toward the source from p for the point (u, v) of the unit square; nullopt where p cannot
+    // see the source's front or the sample carries no light.
+    std::optional<LightSample> sample(const dvec3& p, double u, double v) const;
+    // The solid-angle density with which sample() picks the direction that reached point `hit` (with the
+    // source's normal there) from p.
+    double pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3& hitNormal) const;
+
+    bool isDistant() const { return surface_ < 0; }
+    int surface() const { return surface_; }  // -1 for distant sources
+    int object() const { return object_; }
+    const Emitter& emitter() const { return *emitter_; }
+    // Whether a ray in direction d that escapes the scene meets this distant source.
+    bool distantContains(const dvec3& d) const;
+
+private:
+    std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;
+    void pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const;
+
+    const Shape* shape_ = nullptr;
+    int surface_ = -1;
+    int object_ = -1;
+    const Emitter* emitter_;
+    double area_ = 0;
+    dvec3 center_{0};  // for the subdivision count
+    double size_ = 0;
+    std::vector<double> triangleCdf_;  // polygons: cumulative area of their triangles
+    dvec3 direction_{0};               // distant
+    double oneMinusCos_ = 0;           // distant: 1 − cos(half angle)
+};
+
+}  // namespace brume

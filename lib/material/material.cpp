@@ -1,0 +1,30 @@
+#include "material/material.h"
+
+#include <set>
+
+#include "material/normal.h"
+#include "material/specular.h"
+
+namespace brume {
+
+bool isMaterialType(const std::string& t) {
+    static const std::set<std::string> kTypes{"plastic", "metal", "trans", "mirror", "glass", "dielectric"};
+    return kTypes.count(t) > 0;
+}
+
+bool isEmitterType(const std::string& t) { return t == "light" || t == "spotlight" || t == "glow" || t == "illum"; }
+
+std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings) {
+    std::vector<std::unique_ptr<Material>> materials(scene.objects.size());
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (o.type == "plastic" || o.type == "metal" || o.type == "trans")
+            materials[i] = std::make_unique<NormalMaterial>(o, settings);
+        else if (o.type == "mirror") materials[i] = std::make_unique<Mirror>(o, settings);
+        else if (o.type == "glass") materials[i] = std::make_unique<Glass>(o, settings);
+        else if (o.type == "dielectric") materials[i] = std::make_unique<Dielectric>(o);
+    }
+    return materials;
+}
+
+}  // namespace brume

@@ -1,0 +1,54 @@
+// Mappings from the unit square to directions and points with known densities.
+#pragma once
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "geometry/ray.h"
+
+namespace brume {
+
+// An orthonormal frame around unit vector n (Duff et al. 2017, branchless and continuous).
+struct Frame {
+    dvec3 s, t, n;
+    explicit Frame(const dvec3& normal) : n(normal) {
+        double sign = std::copysign(1.0, n.z);
+        double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
+        s = dvec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+        t = dvec3(b, sign + n.y * n.y * a, -n.y);
+    }
+    dvec3 toWorld(const dvec3& v) const { return v.x * s + v.y * t + v.z * n; }
+};
+
+// Cosine-weighted direction about +z (Malley's method over Shirley's concentric disk); pdf = cosθ/π.
+inline dvec3 cosineHemisphere(double u, double v) {
+    double a = 2 * u - 1, b = 2 * v - 1, r, phi;
+    if (a == 0 && b == 0) return {0, 0, 1};
+    if (a * a > b * b) r = a, phi = std::numbers::pi / 4 * (b / a);
+    else r = b, phi = std::numbers::pi / 2 - std::numbers::pi / 4 * (a / b);
+    double x = r * std::cos(phi), y = r * std::sin(phi);
+    return {x, y, std::sqrt(std::max(0.0, 1 - x * x - y * y))};
+}
+
+// Uniform direction in the cone of half-angle acos(cosMax) about +z; pdf = 1 / (2π(1 − cosMax)).
+// The 1 − cos form keeps tiny cones (the sun: 1 − cos ≈ 1e-5) exact.
+inline dvec3 uniformCone(double u, double v, double oneMinusCosMax) {
+    double oneMinusCos = u * oneMinusCosMax;
+    double cosT = 1 - oneMinusCos;
+    double sinT = std::sqrt(std::max(0.0, oneMinusCos * (2 - oneMinusCos)));
+    double phi = 2 * std::numbers::pi * v;
+    return {sinT * std::cos(phi), sinT * std::sin(phi), cosT};
+}
+
+// Uniform point on a triangle (Heitz 2019's area-preserving, low-distortion map), as barycentrics.
+inline void uniformTriangle(double u, double v, double& b0, double& b1) {
+    if (u < v) {
+        b0 = u / 2;
+        b1 = v - b0;
+    } else {
+        b1 = v / 2;
+        b0 = u - b1;
+    }
+}
+
+}  // namespace brume

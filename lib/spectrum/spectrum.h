@@ -1,0 +1,84 @@
+// Values of light as spectra of runtime length: 3 channels are Radiance's RGB, more are wavelength bands
+// (set by -cs). Storage is inline with a fixed capacity, but copies and arithmetic touch only the
+// channels in use, so RGB pays for 3 floats, not for the capacity.
+#pragma once
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace brume {
+
+class Spectrum {
+public:
+    static constexpr int kMaxChannels = 96;
+
+    // The channel count every Spectrum made without an explicit count gets (3 until -cs changes it).
+    static int defaultChannels() { return sChannels; }
+    static void setDefaultChannels(int n) {
+        assert(n > 0 && n <= kMaxChannels);
+        sChannels = n;
+    }
+
+    Spectrum() : Spectrum(0.f) {}
+    explicit Spectrum(float v, int n = sChannels) : n_(n) { std::fill_n(v_, n_, v); }
+    Spectrum(float r, float g, float b) : n_(3) { v_[0] = r, v_[1] = g, v_[2] = b; }
+    Spectrum(const Spectrum& o) : n_(o.n_) { std::copy_n(o.v_, n_, v_); }
+    Spectrum& operator=(const Spectrum& o) {
+        n_ = o.n_;
+        std::copy_n(o.v_, n_, v_);
+        return *this;
+    }
+
+    int size() const { return n_; }
+    float operator[](int i) const { return v_[i]; }
+    float& operator[](int i) { return v_[i]; }
+
+    Spectrum& operator+=(const Spectrum& o) { return apply(o, [](float& a, float b) { a += b; }); }
+    Spectrum& operator-=(const Spectrum& o) { return apply(o, [](float& a, float b) { a -= b; }); }
+    Spectrum& operator*=(const Spectrum& o) { return apply(o, [](float& a, float b) { a *= b; }); }
+    Spectrum& operator/=(const Spectrum& o) {
+        return apply(o, [](float& a, float b) { a = b != 0.f ? a / b : 0.f; });
+    }
+    Spectrum& operator*=(float s) {
+        for (int i = 0; i < n_; ++i) v_[i] *= s;
+        return *this;
+    }
+    friend Spectrum operator+(Spectrum a, const Spectrum& b) { return a += b; }
+    friend Spectrum operator-(Spectrum a, const Spectrum& b) { return a -= b; }
+    friend Spectrum operator*(Spectrum a, const Spectrum& b) { return a *= b; }
+    friend Spectrum operator/(Spectrum a, const Spectrum& b) { return a /= b; }
+    friend Spectrum operator*(Spectrum a, float s) { return a *= s; }
+    friend Spectrum operator*(float s, Spectrum a) { return a *= s; }
+
+    bool isBlack() const { return std::all_of(v_, v_ + n_, [](float x) { return x == 0.f; }); }
+    float maxValue() const { return *std::max_element(v_, v_ + n_); }
+    float average() const {
+        float s = 0;
+        for (int i = 0; i < n_; ++i) s += v_[i];
+        return s / n_;
+    }
+    // Replaces NaN and infinite channels by zero: one bad sample must not poison a pixel or a sum.
+    Spectrum& clampFinite() {
+        for (int i = 0; i < n_; ++i)
+            if (!std::isfinite(v_[i])) v_[i] = 0.f;
+        return *this;
+    }
+
+private:
+    template <class F>
+    Spectrum& apply(const Spectrum& o, F f) {
+        assert(o.n_ == n_);
+        for (int i = 0; i < n_; ++i) f(v_[i], o.v_[i]);
+        return *this;
+    }
+    inline static int sChannels = 3;
+    int n_;
+    float v_[kMaxChannels];
+};
+
+// Radiance's luminance weights of its RGB primaries (the "bright" of color.h): Y = .265 R + .670 G + .065 B.
+inline float brightness(const Spectrum& s) {
+    return s.size() == 3 ? 0.265f * s[0] + 0.670f * s[1] + 0.065f * s[2] : s.average();
+}
+
+}  // namespace brume

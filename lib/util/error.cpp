@@ -1,0 +1,45 @@
+#include "util/error.h"
+
+#include <iostream>
+#include <mutex>
+#include <set>
+
+namespace brume {
+
+namespace {
+std::string gProgram = "brume";
+bool gWarnings = true;
+std::mutex gWarnMutex;
+}  // namespace
+
+std::string SourceLocation::str() const {
+    return line > 0 ? file + ":" + std::to_string(line) : file;
+}
+
+Error::Error(const SourceLocation& where, const std::string& what) : std::runtime_error(where.str() + ": " + what) {}
+
+void setProgramName(const std::string& name) {
+    auto slash = name.find_last_of('/');
+    gProgram = slash == std::string::npos ? name : name.substr(slash + 1);
+}
+
+const std::string& programName() { return gProgram; }
+
+void setWarningsEnabled(bool on) { gWarnings = on; }
+
+void warn(const std::string& what) {
+    if (!gWarnings) return;
+    std::lock_guard lock(gWarnMutex);
+    std::cerr << gProgram << ": warning - " << what << '\n';
+}
+
+void warnOnce(const std::string& what) {
+    static std::set<std::string> said;
+    {
+        std::lock_guard lock(gWarnMutex);
+        if (!said.insert(what).second) return;
+    }
+    warn(what);
+}
+
+}  // namespace brume

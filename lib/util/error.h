@@ -1,0 +1,33 @@
+// Errors and warnings in Radiance's style: "program: file:line: what is wrong" on stderr.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace brume {
+
+// Where a piece of scene text or input came from; line 0 means "the whole file" or unknown.
+struct SourceLocation {
+    std::string file;
+    int line = 0;
+    std::string str() const;  // "file:line" (or "file" when line is 0)
+};
+
+// A user-facing error: bad scene, bad option, bad input. The message never includes the program name;
+// the tool's main() prefixes it when it reports the error and exits non-zero.
+class Error : public std::runtime_error {
+public:
+    explicit Error(const std::string& what) : std::runtime_error(what) {}
+    Error(const SourceLocation& where, const std::string& what);
+};
+
+// The program name printed before every message (set once by each tool's main).
+void setProgramName(const std::string& name);
+const std::string& programName();
+
+// Warnings go to stderr as "program: warning - what", unless disabled with -w-.
+void setWarningsEnabled(bool on);
+void warn(const std::string& what);
+// Same, but printed only the first time this exact message is given.
+void warnOnce(const std::string& what);
+
+}  // namespace brume

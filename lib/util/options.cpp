@@ -1,0 +1,152 @@
+#include "util/options.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace brume {
+
+void OptionTable::add(const std::string& name, int count, const std::string& help, Apply apply,
+                      std::function<std::string()> current) {
+    options_.push_back({name, Kind::Separate, count, help, std::move(apply), std::move(current)});
+}
+
+void OptionTable::addBool(const std::string& name, bool& value, const std::string& help) {
+    bool* v = &value;
+    options_.push_back({name, Kind::Bool, 0, help,
+                        [v, name](const std::vector<std::string>& a) {
+                            const std::string& s = a[0];
+                            if (s.empty()) *v = !*v;
+                            else if (s == "+" || s == "1" || s == "y" || s == "Y" || s == "t" || s == "T") *v = true;
+                            else if (s == "-" || s == "0" || s == "n" || s == "N" || s == "f" || s == "F") *v = false;
+                            else throw Error("bad boolean '" + s + "' for option " + name);
+                        },
+                        [v] { return std::string(*v ? "+" : "-"); }});
+}
+
+void OptionTable::addAttached(const std::string& name, const std::string& help,
+                              std::function<void(const std::string&)> apply, std::function<std::string()> current) {
+    options_.push_back({name, Kind::Attached, 0, help,
+                        [apply = std::move(apply)](const std::vector<std::string>& a) { apply(a[0]); },
+                        std::move(current)});
+}
+
+// The option this word names: an exact name for options with separate arguments, the longest matching
+// prefix for booleans and attached values.
+const OptionTable::Option* OptionTable::find(const std::string& word) const {
+    const Option* best = nullptr;
+    for (const Option& o : options_) {
+        bool match = o.kind == Kind::Separate ? word == o.name : word.compare(0, o.name.size(), o.name) == 0;
+        if (match && (!best || o.name.size() > best->name.size())) best = &o;
+    }
+    if (best && best->kind == Kind::Bool && word.size() > best->name.size() + 1) return nullptr;
+    return best;
+}
+
+size_t OptionTable::parse(std::vector<std::string>& args) const {
+    expandResponseFiles(args);
+    size_t i = 0;
+    while (i < args.size() && args[i].size() > 1 && args[i][0] == '-') {
+        const std::string& word = args[i];
+        const Option* o = find(word);
+        if (!o) throw Error("unknown option " + word);
+        if (o->kind == Kind::Separate) {
+            if (i + o->count >= args.size()) throw Error("missing argument for option " + word);
+            o->apply({args.begin() + i + 1, args.begin() + i + 1 + o->count});
+            i += 1 + o->count;
+        } else {
+            o->apply({word.substr(o->name.size())});
+            ++i;
+        }
+    }
+    return i;
+}
+
+std::string OptionTable::usage() const {
+    std::ostringstream out;
+    for (const Option& o : options_) {
+        std::string syntax = o.name;
+        if (o.kind == Kind::Bool) syntax += "[+-]";
+        else if (o.kind == Kind::Attached) syntax += "...";
+        else
+            for (int k = 0; k < o.count; ++k) syntax += k == 0 ? " v" : " v";
+        out << "  " << syntax << std::string(syntax.size() < 16 ? 16 - syntax.size() : 1, ' ') << o.help << '\n';
+    }
+    return out.str();
+}
+
+std::string OptionTable::defaults() const {
+    std::ostringstream out;
+    for (const Option& o : options_) {
+        if (!o.current) continue;
+        std::string line = o.name + (o.kind == Kind::Separate ? " " : "") + o.current();
+        out << line << std::string(line.size() < 32 ? 32 - line.size() : 1, ' ') << "# " << o.help << '\n';
+    }
+    return out.str();
+}
+
+int toInt(const std::string& option, const std::string& text) {
+    try {
+        size_t used;
+        long v = std::stol(text, &used);
+        if (used == text.size() && v >= INT32_MIN && v <= INT32_MAX) return static_cast<int>(v);
+    } catch (const std::exception&) {
+    }
+    throw Error("bad value '" + text + "' for option " + option);
+}
+
+double toReal(const std::string& option, const std::string& text) {
+    try {
+        size_t used;
+        double v = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(v)) return v;
+    } catch (const std::exception&) {
+    }
+    throw Error("bad value '" + text + "' for option " + option);
+}
+
+namespace {
+
+std::vector<std::string> wordsOfFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot open option file '" + path + "'");
+    std::vector<std::string> words;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream ls(line);
+        std::string w;
+        while (ls >> w) {
+            if (w[0] == '#') break;
+            if (w.front() == '"' || w.front() == '\'') {
+                char q = w.front();
+                std::string rest;
+                while (w.size() < 2 || w.back() != q) {
+                    if (!(ls >> rest)) throw Error(path + ": unmatched quote");
+                    w += ' ' + rest;
+                }
+                w = w.substr(1, w.size() - 2);
+            }
+            words.push_back(w);
+        }
+    }
+    return words;
+}
+
+}  // namespace
+
+void expandResponseFiles(std::vector<std::string>& args) {
+    for (size_t i = 0, depth = 0; i < args.size();) {
+        if (args[i].size() > 1 && args[i][0] == '@') {
+            if (++depth > 64) throw Error("@file nesting too deep");
+            auto words = wordsOfFile(args[i].substr(1));
+            args.erase(args.begin() + i);
+            args.insert(args.begin() + i, words.begin(), words.end());
+        } else {
+            ++i;
+        }
+    }
+}
+
+}  // namespace brume

@@ -1,0 +1,56 @@
+// Radiance-style command-line options, each declared once (name, arguments, help, how to apply it), so
+// that parsing, the usage message and `-defaults` all follow from one table.
+//   -ab 5      an option with separate arguments
+//   -I+ -I- -I booleans take + - 1 0 y n t f, and a bare flag toggles, as in Radiance
+//   -ovd -faf  an option whose value is attached to its name
+//   @file      reads more arguments from a file (whitespace-separated, # comments, quotes allowed)
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace brume {
+
+class OptionTable {
+public:
+    using Apply = std::function<void(const std::vector<std::string>& args)>;
+
+    // An option followed by `count` separate arguments.
+    void add(const std::string& name, int count, const std::string& help, Apply apply,
+             std::function<std::string()> current = {});
+    // A boolean switch.
+    void addBool(const std::string& name, bool& value, const std::string& help);
+    // An option whose value is the rest of the word (-ovd, -faf); the value may be empty.
+    void addAttached(const std::string& name, const std::string& help, std::function<void(const std::string&)> apply,
+                     std::function<std::string()> current = {});
+
+    // Parses options from args[0..]; returns the index of the first non-option argument. Expands @file.
+    // Throws Error on an unknown option or a missing or malformed argument.
+    size_t parse(std::vector<std::string>& args) const;
+
+    // "  -ab N    number of ambient bounces" lines, in declaration order.
+    std::string usage() const;
+    // The current value of every option, in Radiance's -defaults layout ("-ab 0\t\t\t\t# ambient bounces").
+    std::string defaults() const;
+
+private:
+    enum class Kind { Separate, Bool, Attached };
+    struct Option {
+        std::string name;
+        Kind kind;
+        int count;
+        std::string help;
+        std::function<void(const std::vector<std::string>&)> apply;
+        std::function<std::string()> current;
+    };
+    const Option* find(const std::string& word) const;
+    std::vector<Option> options_;
+};
+
+// Argument conversion with clear errors naming the option: "bad value 'x' for option -ab".
+int toInt(const std::string& option, const std::string& text);
+double toReal(const std::string& option, const std::string& text);
+// Replaces @file words in args by the words in the file.
+void expandResponseFiles(std::vector<std::string>& args);
+
+}  // namespace brume

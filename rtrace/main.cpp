@@ -1,0 +1,187 @@
+// rtrace: values along rays read from standard input, as Radiance's rtrace (see man/rtrace.1).
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <cstdio>
+#include <iostream>
+#include <thread>
+
+#include "integrator/integrator.h"
+#include "integrator/render_options.h"
+#include "io/ray_reader.h"
+#include "io/value_writer.h"
+#include "scene/reader.h"
+#include "util/header.h"
+
+using namespace brume;
+
+namespace {
+
+struct Options {
+    RenderSettings render;
+    bool irradiance = false, irradianceAtHit = false, header = true, warnings = true, limitDistance = false;
+    std::string outputSpec = "v";
+    char inFormat = 'a', outFormat = 'a';
+    int threads = 1, xres = 0, yres = 0;
+};
+
+OptionTable makeTable(Options& o) {
+    OptionTable t;
+    t.addBool("-w", o.warnings, "warning messages");
+    t.add("-n", 1, "number of threads", [&o](const auto& a) {
+        o.threads = toInt("-n", a[0]);
+        if (o.threads <= 0) throw Error("bad number of processes");
+    }, [&o] { return std::to_string(o.threads); });
+    t.add("-x", 1, "flush interval (x resolution)", [&o](const auto& a) { o.xres = toInt("-x", a[0]); },
+          [&o] { return std::to_string(o.xres); });
+    t.add("-y", 1, "y resolution", [&o](const auto& a) { o.yres = toInt("-y", a[0]); },
+          [&o] { return std::to_string(o.yres); });
+    t.addBool("-ld", o.limitDistance, "limit distance to the length of the direction vector");
+    t.addBool("-h", o.header, "output header");
+    t.addBool("-I", o.irradiance, "irradiance at the ray origin, the direction being the surface normal");
+    t.addAttached("-f", "input/output formats: a (ascii), f (float), d (double), c (RGBE, output only)",
+                  [&o](const std::string& v) {
+                      if (v.empty() || v.size() > 2 || std::string("afd").find(v[0]) == std::string::npos ||
+                          (v.size() == 2 && std::string("afdc").find(v[1]) == std::string::npos))
+                          throw Error("command line error at '-f" + v + "'");
+                      o.inFormat = v[0];
+                      o.outFormat = v.size() == 2 ? v[1] : v[0];
+                  },
+                  [&o] { return std::string(1, o.inFormat) + o.outFormat; });
+    t.addAttached("-o", "output values: o d v V w W l L c p n N s m M r x R X ~", [&o](const std::string& v) {
+        o.outputSpec = v;
+    }, [&o] { return o.outputSpec; });
+    t.add("-e", 1, "error file (append)", [](const auto& a) {
+        if (!std::freopen(a[0].c_str(), "a", stderr)) throw Error("cannot open error file '" + a[0] + "'");
+    });
+    addRenderOptions(t, o.render, o.irradianceAtHit);
+    return t;
+}
+
+void usage(const OptionTable& table) {
+    std::cerr << "usage: rtrace [options] octree|scene.rad ... < rays\n" << table.usage();
+}
+
+// Radiance's header: the octree's header, the command, the software, NCOMP and FORMAT.
+void writeHeader(const Scene& scene, const std::vector<std::string>& command, const ValueWriter& writer, char format) {
+    std::string h;
+    if (scene.headerLines.empty()) h += "#?RADIANCE\n";
+    for (const std::string& line : scene.headerLines)
+        if (line.rfind("FORMAT=", 0) != 0) h += line + "\n";
+    h += commandLine(command) + "\n" + softwareAndDates();
+    if (writer.components() > 0) h += "NCOMP=" + std::to_string(writer.components()) + "\n";
+    if (format == 'f' || format == 'd') h += "BigEndian=0\n";
+    h += "FORMAT=" + writer.formatName() + "\n\n";
+    std::fputs(h.c_str(), stdout);
+}
+
+struct InputRay {
+    dvec3 org, dir;
+    double maxDistance;
+    bool zero;
+};
+
+int run(int argc, char** argv) {
+    setProgramName(argv[0]);
+    Options o;
+    OptionTable table = makeTable(o);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && (args[0] == "-help" || args[0] == "--help")) {
+        usage(table);
+        return 0;
+    }
+    if (!args.empty() && args[0] == "-version") {
+        std::printf("Brume %s\n", BRUME_VERSION);
+        return 0;
+    }
+    if (!args.empty() && args[0] == "-defaults") {
+        std::fputs(table.defaults().c_str(), stdout);
+        return 0;
+    }
+    size_t first = table.parse(args);
+    setWarningsEnabled(o.warnings);
+    if (first >= args.size()) {
+        usage(table);
+        throw Error("missing octree or scene file argument");
+    }
+    if (o.render.ambientBounces > 0 && o.render.ambientAccuracy > 0)
+        warnOnce("no irradiance cache yet: -aa > 0 is computed by path tracing, as -aa 0");
+    if (o.irradiance && o.irradianceAtHit) throw Error("-I and -i are exclusive");
+    std::vector<std::string> command{programName()};
+    command.insert(command.end(), args.begin(), args.begin() + first);
+    Scene scene = loadScene({args.begin() + first, args.end()});
+    RenderScene renderScene(scene, o.render.materials);
+    Integrator integrator(renderScene, o.render);
+    ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene);
+    if (o.header) writeHeader(scene, command, writer, o.outFormat);
+    if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);
+
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
+    RayReader reader(std::cin, o.inFormat);
+    long limit = o.yres > 0 ? (o.xres > 1 ? long(o.xres) * o.yres : o.yres) : 0;
+    long flushEvery = (o.yres == 0 || o.xres <= 1) ? o.xres : 0;
+    size_t batch = flushEvery > 0 ? size_t(flushEvery) : 4096;
+    dvec3 lastOrg(0), lastDir(0);
+    long count = 0;
+    bool done = false;
+    std::vector<InputRay> rays;
+    std::vector<RayRecord> records;
+    while (!done) {
+        rays.clear();
+        std::array<double, 6> r;
+        while (rays.size() < batch && (limit == 0 || count < limit)) {
+            if (!reader.next(r)) {
+                done = true;
+                if (limit > 0) warn("unexpected EOF on input");
+                break;
+            }
+            ++count;
+            dvec3 org(r[0], r[1], r[2]), dir(r[3], r[4], r[5]);
+            double len = glm::length(dir);
+            rays.push_back({org, len > 0 ? dir / len : dir, len, !(len > 0)});
+            if (rays.back().zero) break;  // a flush request: finish what came before it
+        }
+        if (limit > 0 && count >= limit) done = true;
+        records.assign(rays.size(), RayRecord{});
+        uint64_t base = uint64_t(count - long(rays.size()));
+        tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+            const InputRay& in = rays[i];
+            if (in.zero) return;
+            if (o.irradiance) records[i] = integrator.irradiance(in.org, in.dir, base + i);
+            else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(in.org, in.dir, base + i);
+            else records[i] = integrator.trace(in.org, in.dir, base + i, o.limitDistance ? in.maxDistance : 0);
+        });
+        for (size_t i = 0; i < rays.size(); ++i) {
+            InputRay in = rays[i];
+            if (in.zero) {
+                in.org = lastOrg, in.dir = lastDir;
+                records[i].point = lastOrg;
+            } else if (o.irradiance) {
+                // Radiance reports the sensor ray as it traced it: just above the point, looking down.
+                in.org = in.org + 1.1e-4 * in.dir, in.dir = -in.dir;
+            }
+            writer.write({in.org, in.dir, &records[i]});
+            lastOrg = in.org, lastDir = in.dir;
+            if (in.zero) std::fflush(stdout);
+        }
+        if (flushEvery > 0) std::fflush(stdout);
+    }
+    if (reader.partial()) warn("partial ray at end of input ignored");
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw Error("write error");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const Error& e) {
+        std::fflush(stdout);
+        std::cerr << programName() << ": " << e.what() << '\n';
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << programName() << ": system - " << e.what() << '\n';
+        return 2;
+    }
+}
