@@ -259,13 +259,13 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
     return value.clampFinite();
 }
 
-// Every source sample, weighted against the lobes that are also sampled by rays (power heuristic).
+// Every source sample. Diffuse lobes take their source light from here alone, as in Radiance (a few
+// stratified shadow rays beat thousands of diffuse rays that rarely find a small source); glossy lobes
+// that are also sampled by rays share it with them by the power heuristic.
 Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
                             Context& ctx) const {
     Spectrum sum(0.f);
     dvec3 wo = -sh.dir;
-    bool diffuseSampled = state.ambientLevel < settings_.ambientBounces;
-    int diffuseCount = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
     for (const Light& light : scene_.lights()) {
         const Emitter& e = light.emitter();
         if (!e.isDirectSource() || light.surface() == surface) continue;
@@ -286,15 +286,13 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
             };
             if (cosL > 0) {
                 double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(cosL) : 1.0;
-                if (!lobes.diffuse.isBlack())
-                    add(lobes.diffuse, fresnel / kPi, diffuseSampled, diffuseCount * cosL / kPi);
+                if (!lobes.diffuse.isBlack()) add(lobes.diffuse, fresnel / kPi, false, 0);
                 if (!lobes.glossy.isBlack())
                     add(lobes.glossy, wardBrdf(wo, s->dir, sh.normal, lobes.alpha2), lobes.sampleGlossy,
                         wardPdf(wo, s->dir, sh.normal, lobes.alpha2));
             } else if (cosL < 0) {
                 double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(-cosL) : 1.0;
-                if (!lobes.diffuseTrans.isBlack())
-                    add(lobes.diffuseTrans, fresnel / kPi, diffuseSampled, -diffuseCount * cosL / kPi);
+                if (!lobes.diffuseTrans.isBlack()) add(lobes.diffuseTrans, fresnel / kPi, false, 0);
                 if (!lobes.glossyTrans.isBlack())
                     add(lobes.glossyTrans, gaussianBtdf(sh.dir, s->dir, lobes.alphaT2, sh.cosine, -cosL),
                         lobes.sampleGlossyTrans, gaussianTransmissionPdf(sh.dir, s->dir, lobes.alphaT2));
@@ -370,7 +368,8 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, 
 }
 
 // Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified
-// paths at the first bounce and one after it, for -ab bounces; beyond them Radiance's -av value.
+// paths at the first bounce and one after it, for -ab bounces; beyond them Radiance's -av value. Sources
+// these paths meet are left out: next-event estimation counted them.
 Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
                              Context& ctx) const {
     Spectrum sum(0.f);
@@ -384,27 +383,20 @@ Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface,
         PathState child;
         float boost;
         if (!spawn(state, child, coef, !transmit, ctx, boost)) continue;
-        const Spectrum& diffuse = transmit ? lobes.diffuseTrans : lobes.diffuse;
         int count = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
         child.kind = PathState::Kind::Sampled;
         child.ambientLevel = state.ambientLevel + 1;
-        child.from = sh.point;
-        child.fromWeight = state.weight;
         Frame frame(transmit ? -sh.normal : sh.normal);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
-        Spectrum paths(0.f), emission(0.f);
+        Spectrum paths(0.f);
         for (int i = 0; i < count; ++i) {
             double u, v;
             sobol2D(i, scramble, u, v);
-            dvec3 local = cosineHemisphere(u, v);
-            child.sampledDensity = count * local.z / kPi;
-            Spectrum e(0.f);
-            paths += radiance(Ray{sh.point, frame.toWorld(local), std::numeric_limits<double>::infinity(), surface},
-                              child, ctx, nullptr, &e);
-            if (!e.isBlack()) emission += e * float(lobes.fresnelDiffuse ? 1 - fresnelEstimate(local.z) : 1.0);
+            paths += radiance(Ray{sh.point, frame.toWorld(cosineHemisphere(u, v)),
+                                  std::numeric_limits<double>::infinity(), surface},
+                              child, ctx, nullptr, nullptr);
         }
-        // Sources found by these paths count for the diffuse lobe only: glossy light is next-event's.
-        sum += (coef * paths + diffuse * emission) * float(boost / count);
+        sum += coef * paths * float(boost / count);
     }
     return sum;
 }

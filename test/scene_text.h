@@ -1,0 +1,39 @@
+// Helpers for tests that build scenes from .rad text and compute with the library.
+#pragma once
+#include <sstream>
+#include <string>
+
+#include "integrator/integrator.h"
+#include "scene/reader.h"
+
+namespace brume::test {
+
+inline Scene sceneFromText(const std::string& text) {
+    Scene scene;
+    std::istringstream in(text);
+    readSceneText(scene, in, "test.rad");
+    return scene;
+}
+
+// A scene ready to trace; holds the parsed scene so the compiled one can refer to it.
+struct TestScene {
+    Scene scene;
+    RenderScene render;
+    TestScene(const std::string& text, const MaterialSettings& m = {}) : scene(sceneFromText(text)), render(scene, m) {}
+};
+
+// Reproducible settings (the same seed every run).
+inline RenderSettings fixedSeed() {
+    RenderSettings s;
+    s.randomSampling = false;
+    return s;
+}
+
+// Mean of the first channel of `runs` independent irradiance estimates.
+inline double meanIrradiance(const Integrator& integrator, const dvec3& p, const dvec3& n, int runs) {
+    double sum = 0;
+    for (int i = 0; i < runs; ++i) sum += integrator.irradiance(p, n, uint64_t(i)).value[0];
+    return sum / runs;
+}
+
+}  // namespace brume::test
