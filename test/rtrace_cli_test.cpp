@@ -1,0 +1,169 @@
+// rtrace as a program: its output stream byte for byte, its options, its errors.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstring>
+#include <unistd.h>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Output {
+    std::string out, err;
+    int status;
+};
+
+// Runs rtrace with `args` (shell words), `input` on stdin.
+Output rtrace(const std::string& args, const std::string& input) {
+    fs::path dir = fs::temp_directory_path() / ("brume_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "in") << input;
+    std::string cmd = "cd " + dir.string() + " && " + BRUME_BIN_DIR + std::string("/rtrace ") + args +
+                      " < in > out 2> err";
+    int status = std::system(cmd.c_str());
+    auto slurp = [&](const char* name) {
+        std::ifstream f(dir / name, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(f), {});
+    };
+    return {slurp("out"), slurp("err"), WEXITSTATUS(status)};
+}
+
+void writeScene(const std::string& name, const std::string& text) {
+    fs::path dir = fs::temp_directory_path() / ("brume_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / name) << text;
+}
+
+const char* kScene =
+    "void light lum 0 0 3 100 100 100\n"
+    "lum sphere bulb 0 0 4 0 0 2 0.1\n"
+    "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+    "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n";
+
+class RtraceCli : public ::testing::Test {
+protected:
+    void SetUp() override { writeScene("s.rad", kScene); }
+};
+
+}  // namespace
+
+TEST_F(RtraceCli, HeaderFollowsRadianceLayout) {
+    Output r = rtrace("-ab 0 -ov s.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("#?RADIANCE\nrtrace -ab 0 -ov\nSOFTWARE= Brume ", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("\nCAPDATE= "), std::string::npos);
+    EXPECT_NE(r.out.find("\nGMT= "), std::string::npos);
+    EXPECT_NE(r.out.find("\nNCOMP=3\nFORMAT=ascii\n\n"), std::string::npos) << r.out;
+}
+
+// Every value "%e" and a tab, names followed by a tab, one line per ray; misses print Radiance's 1e10
+// lengths, the origin as point, zero normals and "*" names.
+TEST_F(RtraceCli, AsciiRecordsMatchRadianceByteForByte) {
+    Output r = rtrace("-h- -odLpNsm~ s.rad", "0 0 1 0 0 -1\n0 0 1 1 0 0\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out,
+              "0.000000e+00\t0.000000e+00\t-1.000000e+00\t1.000000e+00\t0.000000e+00\t0.000000e+00\t"
+              "0.000000e+00\t0.000000e+00\t0.000000e+00\t1.000000e+00\tfloor\tgrey\t~\t\n"
+              "1.000000e+00\t0.000000e+00\t0.000000e+00\t1.000000e+10\t0.000000e+00\t0.000000e+00\t"
+              "1.000000e+00\t0.000000e+00\t0.000000e+00\t0.000000e+00\t*\t*\t~\t\n");
+}
+
+TEST_F(RtraceCli, BinaryFormatsCarryNativeNumbers) {
+    Output r = rtrace("-h- -faf -ovL s.rad", "0 0 1 1 0 0\n");  // misses: value 0, length 1e10
+    ASSERT_EQ(r.out.size(), 4 * sizeof(float));
+    float v[4];
+    std::memcpy(v, r.out.data(), sizeof v);
+    EXPECT_EQ(v[0], 0.f);
+    EXPECT_EQ(v[3], 1e10f);
+    Output d = rtrace("-h- -fad -oL s.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(d.out.size(), sizeof(double));
+    double len;
+    std::memcpy(&len, d.out.data(), sizeof len);
+    EXPECT_DOUBLE_EQ(len, 1.0);
+}
+
+TEST_F(RtraceCli, ColorFormatWritesRgbe) {
+    writeScene("bright.rad", "void glow g 0 0 4 10 10 10 0\ng bubble s 0 0 4 0 0 0 100\n");
+    Output r = rtrace("-h- -fac -ov bright.rad", "0 0 0 1 0 0\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(r.out.size(), 4u);
+    // 10 = 0.625 × 2⁴: mantissa 160 (0xa0), exponent byte 128 + 4.
+    EXPECT_EQ(r.out, std::string("\xa0\xa0\xa0\x84", 4));
+    EXPECT_NE(rtrace("-fac -ovd bright.rad", "").status, 0);
+}
+
+TEST_F(RtraceCli, ResolutionLineAndZeroRayFlush) {
+    Output r = rtrace("-h- -x 1 -y 2 -oL s.rad", "0 0 1 0 0 -1\n0 0 0 0 0 0\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "-Y        2 +X        1\n1.000000e+00\t\n1.000000e+10\t\n");
+}
+
+TEST_F(RtraceCli, IrradianceModePrintsTheSensorRayAsRadianceDoes) {
+    Output r = rtrace("-h- -I -ood s.rad", "0 0 2 0 0 -1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "0.000000e+00\t0.000000e+00\t1.999890e+00\t-0.000000e+00\t-0.000000e+00\t1.000000e+00\t\n");
+}
+
+// Same seed (-u-), same answer, whatever the number of threads.
+TEST_F(RtraceCli, ReproducibleWhateverTheThreadCount) {
+    std::string rays;
+    for (int i = 0; i < 200; ++i) rays += std::to_string(-2 + 0.02 * i) + " 0.5 1 0.1 0.2 -1\n";
+    Output one = rtrace("-h- -u- -ab 2 -ad 16 -n 1 s.rad", rays);
+    Output two = rtrace("-h- -u- -ab 2 -ad 16 -n 2 s.rad", rays);
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(one.out, two.out);
+    EXPECT_EQ(one.out.size() > 0, true);
+}
+
+TEST_F(RtraceCli, BooleanOptionsTakeRadianceSuffixes) {
+    Output on = rtrace("-h- -u- -I+ -ov s.rad", "0 0 0 0 0 1\n");
+    Output toggled = rtrace("-h- -u- -I -ov s.rad", "0 0 0 0 0 1\n");
+    Output off = rtrace("-h- -u- -I+ -I- -ov s.rad", "0 0 0 0 0 1\n");
+    EXPECT_EQ(on.out, toggled.out);
+    EXPECT_NE(on.out, off.out);
+}
+
+TEST_F(RtraceCli, OptionsComeFromAtFiles) {
+    writeScene("opts", "-h- -I+\n-ov -u-  # a comment\n");
+    EXPECT_EQ(rtrace("@opts s.rad", "0 0 0 0 0 1\n").out, rtrace("-h- -u- -I+ -ov s.rad", "0 0 0 0 0 1\n").out);
+}
+
+// Bad input: "rtrace: file:line: what", non-zero status, nothing on stdout.
+TEST_F(RtraceCli, SceneErrorsNameFileAndLineAndWriteNothing) {
+    writeScene("bad.rad", "void plastic p 0 0 5 .5 .5 .5 0 0\n\np sphere s 0 0 3 0 0 0\n");
+    Output r = rtrace("bad.rad", "0 0 0 0 0 1\n");
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err.rfind("rtrace: bad.rad:3: ", 0), 0u) << r.err;
+}
+
+TEST_F(RtraceCli, PlannedTypesAreRefusedByName) {
+    writeScene("pattern.rad", "void brightfunc b 2 f f.cal 0 0\nb plastic p 0 0 5 .5 .5 .5 0 0\n");
+    Output r = rtrace("pattern.rad", "");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("brightfunc"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("pattern.rad:1"), std::string::npos) << r.err;
+}
+
+TEST_F(RtraceCli, UnknownOptionsAndMissingSceneAreErrors) {
+    EXPECT_NE(rtrace("-zz s.rad", "").status, 0);
+    EXPECT_NE(rtrace("-ab", "").status, 0);
+    EXPECT_NE(rtrace("-ab x s.rad", "").status, 0);
+    EXPECT_NE(rtrace("-ov", "").status, 0);
+    EXPECT_NE(rtrace("-oq s.rad", "").status, 0);
+    EXPECT_NE(rtrace("nonexistent.rad", "").status, 0);
+}
+
+TEST_F(RtraceCli, AmbientAccuracyWarnsOnceThatItPathTraces) {
+    Output r = rtrace("-h- -ab 1 -ad 4 s.rad", "0 0 1 0 0 -1\n0 0 1 0 0 -1\n");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.err.find("path tracing"), std::string::npos);
+    EXPECT_EQ(r.err.find("path tracing"), r.err.rfind("path tracing"));
+}
