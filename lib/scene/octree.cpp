@@ -165,10 +165,12 @@ void readFrozenObjects(Scene& scene, OctreeInput& input, int objectSize, size_t 
 }
 
 // A normal octree's scene files, read again as rtrace does; the object count tells if it is stale.
-void readListedFiles(Scene& scene, const std::vector<std::string>& files, size_t count, const OctreeInput& input) {
+void readListedFiles(Scene& scene, const std::vector<std::string>& files, size_t count, const OctreeInput& input,
+                     ReadOptions options) {
+    options.searchRayPath = false;
     size_t first = scene.objects.size();
     try {
-        for (const std::string& file : files) readSceneFile(scene, file, {.searchRayPath = false});
+        for (const std::string& file : files) readSceneFile(scene, file, options);
     } catch (const Error& e) {
         input.fail(e.what());
     }
@@ -190,7 +192,7 @@ bool isOctree(std::istream& in) {
     return octree;
 }
 
-void readOctree(Scene& scene, std::istream& in, const std::string& name) {
+void readOctree(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options) {
     OctreeInput input(in, name);
     auto header = readHeader(in, SIZE_MAX);
     if (!header) input.fail("not an octree (no information header)");
@@ -211,7 +213,7 @@ void readOctree(Scene& scene, std::istream& in, const std::string& name) {
     for (std::string file; !(file = input.string()).empty();) files.push_back(std::move(file));
     size_t count = input.count(static_cast<int>(objectSize));
     scene.sources.push_back(name);
-    if (!files.empty()) return readListedFiles(scene, files, count, input);
+    if (!files.empty()) return readListedFiles(scene, files, count, input, options);
     skipTree(input, static_cast<int>(objectSize));
     readFrozenObjects(scene, input, static_cast<int>(objectSize), count);
 }

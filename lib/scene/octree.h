@@ -5,6 +5,7 @@
 #include <istream>
 #include <string>
 
+#include "scene/reader.h"
 #include "scene/scene.h"
 
 namespace brume {
@@ -14,8 +15,9 @@ namespace brume {
 bool isOctree(std::istream& in);
 // Appends an octree's objects to `scene` and sets its headerLines and cube; `name` is used in messages.
 // The scene files a normal octree lists are opened as rtrace does: relative to the current directory
-// (not the octree's), names starting with '!' being commands.
-void readOctree(Scene& scene, std::istream& in, const std::string& name);
+// (not the octree's), names starting with '!' being commands if `options` allow them (its
+// searchRayPath is ignored).
+void readOctree(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options = {});
 void readOctreeFile(Scene& scene, const std::string& path);
 
 }  // namespace brume

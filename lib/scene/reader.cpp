@@ -43,7 +43,7 @@ bool isReal(std::string_view s) {
     return i == s.size();
 }
 
-// from_chars accepts neither a leading '+' nor (for integers) nothing else, so strip it first.
+// std::from_chars rejects the leading '+' that Radiance allows.
 std::string_view withoutPlus(std::string_view s) { return s.starts_with('+') ? s.substr(1) : s; }
 
 class SceneParser {
