@@ -2,6 +2,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <bit>
 #include <cstdio>
 #include <iostream>
 #include <thread>
@@ -18,6 +19,7 @@ using namespace brume;
 namespace {
 
 struct Options {
+    std::string immediate;  // -defaults, -help, -version, -features: print and stop
     RenderSettings render;
     bool irradiance = false, irradianceAtHit = false, header = true, warnings = true, limitDistance = false;
     std::string outputSpec = "v";
@@ -52,9 +54,31 @@ OptionTable makeTable(Options& o) {
         o.outputSpec = v;
     }, [&o] { return o.outputSpec; });
     t.add("-e", 1, "error file (append)", [](const auto& a) {
+        if (a[0].find_first_of("=:") != std::string::npos)
+            throw Error("-e expressions (.cal) are not supported by Brume yet");
         if (!std::freopen(a[0].c_str(), "a", stderr)) throw Error("cannot open error file '" + a[0] + "'");
     });
     addRenderOptions(t, o.render, o.irradianceAtHit);
+    t.addAttached("-p", "output colour space: RGB (others not yet)", [](const std::string& v) {
+        if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
+    });
+    auto notYet = [&t](const std::string& name, int count, const std::string& what) {
+        t.add(name, count, what + " (not supported yet)",
+              [name](const auto&) { throw Error("option " + name + " is not supported by Brume yet"); });
+    };
+    notYet("-pc", 8, "output colour primaries");
+    notYet("-cs", 1, "spectral samples");
+    notYet("-cw", 2, "spectral range");
+    t.addAttached("-co", "spectral output (not supported yet)",
+                  [](const std::string&) { throw Error("option -co is not supported by Brume yet"); });
+    t.addAttached("-ap", "photon maps (not supported)",
+                  [](const std::string&) { throw Error("photon maps (-ap) are not supported by Brume"); });
+    notYet("-am", 1, "photon search radius");
+    for (const char* name : {"-ti", "-te", "-tI", "-tE"}) notYet(name, 1, "trace include/exclude");
+    notYet("-P", 1, "persistent mode");
+    notYet("-PP", 1, "persistent mode");
+    for (const char* name : {"-defaults", "-help", "-version", "-features"})
+        t.add(name, 0, "print and exit", [&o, name](const auto&) { o.immediate = name; });
     return t;
 }
 
@@ -70,8 +94,16 @@ void writeHeader(const Scene& scene, const std::vector<std::string>& command, co
         if (line.rfind("FORMAT=", 0) != 0) h += line + "\n";
     h += commandLine(command) + "\n" + softwareAndDates();
     if (writer.components() > 0) h += "NCOMP=" + std::to_string(writer.components()) + "\n";
-    if (format == 'f' || format == 'd') h += "BigEndian=0\n";
-    h += "FORMAT=" + writer.formatName() + "\n\n";
+    if (format == 'f' || format == 'd') h += std::string("BigEndian=") + (std::endian::native == std::endian::big ? "1" : "0") + "\n";
+    h += "FORMAT=" + writer.formatName();
+    // Binary values start aligned in a file, as Radiance does it (not on pipes, which cannot tell where).
+    long at = std::ftell(stdout);
+    int align = format == 'f' ? 4 : format == 'd' ? 8 : 0;
+    if (align && at >= 0) {
+        int r = int((at + long(h.size()) + 2) % align);
+        if (r) h += std::string(align - r, ' ');
+    }
+    h += "\n\n";
     std::fputs(h.c_str(), stdout);
 }
 
@@ -86,20 +118,27 @@ int run(int argc, char** argv) {
     Options o;
     OptionTable table = makeTable(o);
     std::vector<std::string> args(argv + 1, argv + argc);
-    if (!args.empty() && (args[0] == "-help" || args[0] == "--help")) {
+    if (!args.empty() && args[0] == "--help") args[0] = "-help";
+    size_t first = table.parse(args);
+    setWarningsEnabled(o.warnings);
+    if (o.immediate == "-help") {
         usage(table);
         return 0;
     }
-    if (!args.empty() && args[0] == "-version") {
+    if (o.immediate == "-version") {
         std::printf("Brume %s\n", BRUME_VERSION);
         return 0;
     }
-    if (!args.empty() && args[0] == "-defaults") {
+    if (o.immediate == "-defaults") {
         std::fputs(table.defaults().c_str(), stdout);
         return 0;
     }
-    size_t first = table.parse(args);
-    setWarningsEnabled(o.warnings);
+    if (o.immediate == "-features") {
+        std::puts("Multithreading\nIrradianceCalc\nImmediateIrradiance\nDistanceLimiting\nReproducibleSampling");
+        return 0;
+    }
+    if (o.render.maxReflections <= 0 && !(o.render.minWeight > 0))
+        throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
     if (first >= args.size()) {
         usage(table);
         throw Error("missing octree or scene file argument");
@@ -167,7 +206,7 @@ int run(int argc, char** argv) {
         if (flushEvery > 0) std::fflush(stdout);
     }
     if (reader.partial()) warn("partial ray at end of input ignored");
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw Error("write error");
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
     return 0;
 }
 

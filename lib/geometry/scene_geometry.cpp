@@ -170,7 +170,7 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     RTCRayHit rh{};
     rh.ray.org_x = float(ray.org.x), rh.ray.org_y = float(ray.org.y), rh.ray.org_z = float(ray.org.z);
     rh.ray.dir_x = float(ray.dir.x), rh.ray.dir_y = float(ray.dir.y), rh.ray.dir_z = float(ray.dir.z);
-    rh.ray.tnear = 0.f;
+    rh.ray.tnear = float(ray.tmin);
     rh.ray.tfar = ray.tmax > 3e38 ? std::numeric_limits<float>::infinity() : float(ray.tmax);
     rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;

@@ -28,11 +28,11 @@ template <class Accept>
 std::optional<double> pickRoot(double t0, double t1, const Ray& ray, bool leavingThis, Accept accept) {
     if (leavingThis) {
         double other = std::abs(t0) < std::abs(t1) ? t1 : t0;
-        if (other > 0 && other < ray.tmax && accept(other)) return other;
+        if (other > ray.tmin && other < ray.tmax && accept(other)) return other;
         return std::nullopt;
     }
     for (double t : {t0, t1})
-        if (t > 0 && t < ray.tmax && accept(t)) return t;
+        if (t > ray.tmin && t < ray.tmax && accept(t)) return t;
     return std::nullopt;
 }
 
@@ -79,7 +79,7 @@ std::optional<ShapeHit> Ring::intersect(const Ray& ray) const {
     double denom = glm::dot(normal, ray.dir);
     if (denom == 0) return std::nullopt;
     double t = glm::dot(normal, center - ray.org) / denom;
-    if (!(t > 0 && t < ray.tmax)) return std::nullopt;
+    if (!(t > ray.tmin && t < ray.tmax)) return std::nullopt;
     dvec3 d = ray.at(t) - center;
     double r2 = glm::dot(d, d);
     if (r2 < innerRadius * innerRadius || r2 > outerRadius * outerRadius) return std::nullopt;

@@ -44,6 +44,12 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
     epsilon_ = 1e-7 * size;
 }
 
+// Rays given on input may start exactly on a surface (a sensor on the floor); like Radiance, which ignores
+// hits closer than 1e-6, ignore those, but relative to the scene's and the point's size.
+double Integrator::primaryTmin(const dvec3& org) const {
+    return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
+}
+
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
 
 RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance) const {
@@ -52,6 +58,7 @@ RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, 
     rec.point = org;
     Ray ray{org, glm::normalize(dir)};
     if (maxDistance > 0) ray.tmax = maxDistance;
+    ray.tmin = primaryTmin(org);
     rec.value = radiance(ray, PathState{}, ctx, &rec, nullptr);
     return rec;
 }
@@ -61,19 +68,19 @@ RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, 
 RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t index) const {
     Context ctx{Random(seedFor(index), index)};
     dvec3 n = glm::normalize(normal);
-    double offset = epsilon_ + 4e-7 * std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    Shading sh{p + offset * n, n, -n, 1.0, false, false, 0.0};
+    Shading sh{p + primaryTmin(p) * n, n, -n, 1.0, false, false, 0.0};
     Lobes lobes;
     lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
     RayRecord rec;
     rec.point = p;
-    rec.normal = n;
+    rec.normal = rec.surfaceNormal = n;
     rec.value = shade(sh, lobes, -1, PathState{}, ctx, nullptr);
     return rec;
 }
 
 RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index) const {
     Ray ray{org, glm::normalize(dir)};
+    ray.tmin = primaryTmin(org);
     RayRecord rec;
     rec.point = org;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
@@ -97,6 +104,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
         rec.firstLength = rec.effectiveLength = glm::length(hit->point - org);
         rec.point = hit->point;
         rec.normal = n;
+        rec.surfaceNormal = hit->normal;
         rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
         rec.modifierObject = mat;
         return rec;
@@ -107,7 +115,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
 Spectrum Integrator::radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                               Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
-    if (!hit) return escaped(ray, state, misEmission);
+    if (!hit) return escaped(ray, state, record, misEmission);
     const Surface& surface = scene_.geometry().surfaces()[hit->surface];
     int mat = scene_.materialObject(hit->surface);
     bool back = glm::dot(hit->normal, ray.dir) > 0;
@@ -118,6 +126,7 @@ Spectrum Integrator::radiance(const Ray& ray, const PathState& state, Context& c
         record->firstLength = record->effectiveLength = hit->t;
         record->point = hit->point;
         record->normal = sh.normal;
+        record->surfaceNormal = hit->normal;
         record->surfaceObject = surface.object;
         record->modifierObject = mat;
     }
@@ -146,14 +155,15 @@ Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const Pa
 
 double Integrator::misWeightForLight(const Light& light, const PathState& state, const Ray& ray,
                                      const SurfaceHit* hit) const {
-    double dist = hit ? hit->t : std::numeric_limits<double>::infinity();
+    // Distance from where the sampled ray left: it may have crossed clear glass on the way.
+    double dist = hit ? glm::length(hit->point - state.from) : std::numeric_limits<double>::infinity();
     dvec3 normal = hit ? hit->normal : dvec3(0);
     double lightDensity = light.pdf(state.from, ray.dir, dist, normal) *
                           light.sampleCount(state.from, settings_.sourceSubdivision, state.fromWeight);
     return powerHeuristic(state.sampledDensity, lightDensity);
 }
 
-Spectrum Integrator::escaped(const Ray& ray, const PathState& state, Spectrum* misEmission) const {
+Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* record, Spectrum* misEmission) const {
     // Radiance's order: real sources first, then glows (skies).
     for (bool glows : {false, true}) {
         for (int li : scene_.distantLights()) {
@@ -164,9 +174,14 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, Spectrum* m
                 if (state.kind == PathState::Kind::Sampled) return Spectrum(0.f);
                 continue;
             }
-            if (!settings_.directVisible && !glows) return Spectrum(0.f);
+            if (record) {  // a source at infinity: named, facing the ray, at no distance
+                record->surfaceObject = light.object();
+                record->modifierObject = scene_.scene().objects[light.object()].modifier;
+                record->normal = record->surfaceNormal = -ray.dir;
+            }
             Spectrum le = e.emitted(-ray.dir);
-            if (glows || state.kind != PathState::Kind::Sampled) return le;
+            if (glows) return le;
+            if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
             if (misEmission) *misEmission += le * float(misWeightForLight(light, state, ray, nullptr));
             return Spectrum(0.f);
         }
@@ -189,9 +204,10 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
         return passThrough(ray, hit, state, ctx, record, misEmission);
     }
     bool distantGlow = e.kind == Emitter::Kind::Glow && e.glowRadius >= 0 && hit.t > e.glowRadius;
-    if (!settings_.directVisible && !distantGlow) return Spectrum(0.f);
     Spectrum le = e.emitted(-ray.dir);
-    if (state.kind != PathState::Kind::Sampled) return le;
+    // -dv- hides sources from the rays that would see them, not the direct light sampled rays carry.
+    if (state.kind != PathState::Kind::Sampled)
+        return settings_.directVisible || distantGlow ? le : Spectrum(0.f);
     if (e.kind == Emitter::Kind::Glow) return distantGlow ? le : Spectrum(0.f);  // near ones: next-event's job
     int li = scene_.lightOfSurface(hit.surface);
     if (li < 0) return le;  // not sampled as a source: only paths find it
@@ -231,7 +247,10 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
         PathState child;
         float boost;
         if (!spawn(state, child, d.weight, !d.transmits, ctx, boost)) continue;
-        child.kind = PathState::Kind::Specular;
+        // Shadow rays cross straight-through transmissions too, so sources seen through them were already
+        // counted at the sampled ray's origin; any other specular bend makes a path only rays can find.
+        bool straight = d.transmits && glm::dot(glm::normalize(d.dir), sh.dir) > 1 - 1e-12;
+        if (!(straight && state.kind == PathState::Kind::Sampled)) child.kind = PathState::Kind::Specular;
         RayRecord childRecord;
         Spectrum li = radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
                                child, ctx, record ? &childRecord : nullptr, nullptr);
@@ -268,7 +287,7 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
     dvec3 wo = -sh.dir;
     for (const Light& light : scene_.lights()) {
         const Emitter& e = light.emitter();
-        if (!e.isDirectSource() || light.surface() == surface) continue;
+        if (!e.isDirectSource() || (surface >= 0 && light.surface() == surface)) continue;
         int count = light.sampleCount(sh.point, settings_.sourceSubdivision, state.weight);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         for (int k = 0; k < count; ++k) {
@@ -376,7 +395,7 @@ Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface,
     for (bool transmit : {false, true}) {
         const Spectrum& coef = transmit ? lobes.ambientTrans : lobes.ambient;
         if (coef.isBlack()) continue;
-        if (state.ambientLevel >= settings_.ambientBounces) {
+        if (state.ambientLevel >= settings_.ambientBounces || settings_.ambientDivisions <= 0) {
             sum += coef * settings_.ambientValue;
             continue;
         }

@@ -16,7 +16,8 @@ struct RayRecord {
     double firstLength = std::numeric_limits<double>::infinity();      // L: to the first surface
     double effectiveLength = std::numeric_limits<double>::infinity();  // l: through specular pass-throughs
     dvec3 point{0};                                                     // p
-    dvec3 normal{0};                                                    // n and N (no perturbation yet)
+    dvec3 normal{0};             // n: the normal turned toward the ray (textures will perturb it)
+    dvec3 surfaceNormal{0};      // N: the surface's own normal, as the scene orients it
     int surfaceObject = -1;   // s
     int modifierObject = -1;  // m
     Spectrum mirrored{0.f};   // r: the part of value that came by specular reflection
@@ -40,7 +41,7 @@ private:
     struct Context;
     Spectrum radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                       Spectrum* misEmission) const;
-    Spectrum escaped(const Ray& ray, const PathState& state, Spectrum* misEmission) const;
+    Spectrum escaped(const Ray& ray, const PathState& state, RayRecord* record, Spectrum* misEmission) const;
     Spectrum emitterHit(const Ray& ray, const struct SurfaceHit& hit, const struct Shading& sh, const Emitter& e,
                         const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
@@ -55,6 +56,7 @@ private:
                float& boost) const;
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
     uint64_t seedFor(uint64_t index) const;
+    double primaryTmin(const dvec3& org) const;
 
     const RenderScene& scene_;
     RenderSettings settings_;

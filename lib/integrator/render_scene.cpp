@@ -13,7 +13,7 @@ const std::set<std::string> kPlannedTypes{
     "texdata", "mixfunc", "mixdata", "mixpict", "mixtext", "mesh", "instance", "mist", "spectrum", "specfile",
     "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2", "WGMDfunc", "interface",
     "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
-    "brtdfunc", "antimatter"};
+    "BRTDfunc", "antimatter"};
 
 }  // namespace
 

@@ -92,7 +92,8 @@ std::string ValueWriter::objectName(int object) const { return object < 0 ? "*" 
 
 void ValueWriter::write(const OutputRay& ray) {
     const RayRecord& r = *ray.record;
-    bool hit = r.surfaceObject >= 0;
+    bool hit = r.surfaceObject >= 0;       // a surface, or a source at infinity
+    bool local = std::isfinite(r.firstLength);
     for (char c : spec_) {
         switch (c) {
             case 'o': reals(&ray.org.x, 3); break;
@@ -120,10 +121,10 @@ void ValueWriter::write(const OutputRay& ray) {
                 reals(uv, 2);
                 break;
             }
-            case 'p': reals(hit ? &r.point.x : &ray.org.x, 3); break;
+            case 'p': reals(local ? &r.point.x : &ray.org.x, 3); break;
             case 'n':
             case 'N': {
-                dvec3 n = hit ? r.normal : dvec3(0);
+                dvec3 n = hit ? (c == 'n' ? r.normal : r.surfaceNormal) : dvec3(0);
                 reals(&n.x, 3);
                 break;
             }

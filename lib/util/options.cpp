@@ -1,6 +1,7 @@
 #include "util/options.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -136,16 +137,33 @@ std::vector<std::string> wordsOfFile(const std::string& path) {
 
 }  // namespace
 
+std::vector<std::string> splitWords(const std::string& text) {
+    std::istringstream in(text);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;) words.push_back(w);
+    return words;
+}
+
+// @file and $VARIABLE words are replaced by the words they hold, repeatedly, as Radiance's expandarg.
 void expandResponseFiles(std::vector<std::string>& args) {
-    for (size_t i = 0, depth = 0; i < args.size();) {
-        if (args[i].size() > 1 && args[i][0] == '@') {
-            if (++depth > 64) throw Error("@file nesting too deep");
-            auto words = wordsOfFile(args[i].substr(1));
-            args.erase(args.begin() + i);
-            args.insert(args.begin() + i, words.begin(), words.end());
-        } else {
+    int expansions = 0;
+    for (size_t i = 0; i < args.size();) {
+        const std::string& a = args[i];
+        if (a.size() < 2 || (a[0] != '@' && a[0] != '$')) {
             ++i;
+            continue;
         }
+        if (++expansions > 1000) throw Error("too many @file or $VARIABLE expansions at '" + a + "'");
+        std::vector<std::string> words;
+        if (a[0] == '@') {
+            words = wordsOfFile(a.substr(1));
+        } else {
+            const char* value = std::getenv(a.c_str() + 1);
+            if (!value) throw Error("cannot expand '" + a + "': no such environment variable");
+            words = splitWords(value);
+        }
+        args.erase(args.begin() + i);
+        args.insert(args.begin() + i, words.begin(), words.end());
     }
 }
 

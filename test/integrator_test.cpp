@@ -1,0 +1,70 @@
+// How the integrator counts light: each path once, whatever route it takes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "scene_text.h"
+
+using namespace brume;
+using namespace brume::test;
+
+namespace {
+// The sun (10⁵ W/sr/m², 0.5°) above a clear pane of transmissivity 0.9: E = L Ω T, T from the
+// multiple-reflection formula of glass at normal incidence (n = 1.52): 0.8262.
+const char* kSunThroughGlass =
+    "void light solar 0 0 3 1e5 1e5 1e5\n"
+    "solar source sun 0 0 4 0 0 1 0.5\n"
+    "void glass pane 0 0 3 .9 .9 .9\n"
+    "pane polygon win 0 0 12 -1 -1 1 1 -1 1 1 1 1 -1 1 1\n";
+
+double sunThroughGlass() {
+    double omega = 2 * std::numbers::pi * (1 - std::cos(0.25 * std::numbers::pi / 180));
+    double r = std::pow((1 - 1.52) / (1 + 1.52), 2), tau = 0.9;
+    return 1e5 * omega * (1 - r) * (1 - r) * tau / (1 - r * r * tau * tau);
+}
+}  // namespace
+
+// Tolerance 0.1%: the sun's cone is sampled exactly; only the cosine varies inside it (< 1e-5).
+TEST(Integrator, SunThroughGlassReachesASensorOnceWhateverTheBounces) {
+    TestScene t(kSunThroughGlass);
+    for (int bounces : {0, 1, 3}) {
+        RenderSettings s = fixedSeed();
+        s.ambientBounces = bounces;
+        s.ambientDivisions = 64;
+        Integrator integrator(t.render, s);
+        EXPECT_NEAR(integrator.irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], sunThroughGlass(), 1e-3 * sunThroughGlass())
+            << "-ab " << bounces;
+    }
+}
+
+TEST(Integrator, ZeroAmbientDivisionsKeepDirectLight) {
+    TestScene t(kSunThroughGlass);
+    RenderSettings s = fixedSeed();
+    s.ambientBounces = 2;
+    s.ambientDivisions = 0;
+    Integrator integrator(t.render, s);
+    EXPECT_NEAR(integrator.irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], sunThroughGlass(), 1e-3 * sunThroughGlass());
+}
+
+// -dv- hides sources from the rays that look at them, not the light a glossy surface reflects of them.
+TEST(Integrator, InvisibleSourcesStillLightGlossySurfaces) {
+    TestScene t("void light lum 0 0 3 100 100 100\n"
+                "lum sphere bulb 0 0 4 0 0 2 0.2\n"
+                "void metal shiny 0 0 5 .8 .8 .8 .9 .05\n"
+                "shiny polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n");
+    RenderSettings visible = fixedSeed(), hidden = fixedSeed();
+    hidden.directVisible = false;
+    Integrator a(t.render, visible), b(t.render, hidden);
+    // Looking at the floor where it mirrors the bulb (a highlight), averaged over many rays.
+    double sumA = 0, sumB = 0;
+    for (int i = 0; i < 400; ++i) {
+        dvec3 org(-1, 0, 1), dir = glm::normalize(dvec3(1, 0, -1));
+        sumA += a.trace(org, dir, i).value[0];
+        sumB += b.trace(org, dir, i).value[0];
+    }
+    EXPECT_GT(sumA, 0);
+    EXPECT_NEAR(sumB, sumA, 0.05 * sumA);
+    EXPECT_EQ(b.trace(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    EXPECT_EQ(a.trace(dvec3(0, 0, 0.5), dvec3(0, 0, 1), 0).value[0], 100.f);
+}
