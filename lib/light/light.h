@@ -7,6 +7,7 @@
 
 #include "geometry/surface.h"
 #include "light/emitter.h"
+#include "sampling/spherical_triangle.h"
 
 namespace brume {
 
@@ -42,6 +43,9 @@ public:
 
 private:
     std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;
+    double solidAngles(const dvec3& p, SphericalTriangle* out) const;
+    std::optional<LightSample> sampleSolidAngle(const dvec3& p, double u, double v, const SphericalTriangle* tris,
+                                                double total) const;
     void pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const;
 
     const Shape* shape_ = nullptr;
