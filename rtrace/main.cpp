@@ -114,6 +114,7 @@ struct InputRay {
 };
 
 int run(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);  // std::cin reads rays; unsynchronised it reads them in blocks
     setProgramName(argv[0]);
     Options o;
     OptionTable table = makeTable(o);

@@ -290,10 +290,11 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
         if (!e.isDirectSource() || (surface >= 0 && light.surface() == surface)) continue;
         int count = light.sampleCount(sh.point, settings_.sourceSubdivision, state.weight);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+        LightView view = light.view(sh.point);
         for (int k = 0; k < count; ++k) {
             double u, v;
             sobol2D(k, scramble, u, v);
-            auto s = light.sample(sh.point, u, v);
+            auto s = light.sample(view, u, v);
             if (!s || s->radiance.isBlack()) continue;
             if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
             double cosL = glm::dot(sh.normal, s->dir);

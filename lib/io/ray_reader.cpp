@@ -1,17 +1,30 @@
 #include "io/ray_reader.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 
 namespace brume {
 
+// One whitespace-separated word as a number, read straight from the stream buffer (rays come by the
+// million; formatted extraction costs more than tracing them).
 bool RayReader::word(double& v) {
-    std::string w;
-    if (!(in_ >> w)) return false;
+    std::streambuf* buf = in_.rdbuf();
+    int c = buf->sgetc();
+    while (c != EOF && std::isspace(c)) c = buf->snextc();
+    char w[64];
+    size_t n = 0;
+    while (c != EOF && !std::isspace(c)) {
+        if (n + 1 < sizeof w) w[n++] = char(c);
+        else return false;  // no number is that long
+        c = buf->snextc();
+    }
+    if (n == 0) return false;
+    w[n] = '\0';
     char* end = nullptr;
-    v = std::strtod(w.c_str(), &end);
-    return end && *end == '\0' && end != w.c_str() && std::isfinite(v);
+    v = std::strtod(w, &end);
+    return end == w + n && std::isfinite(v);
 }
 
 bool RayReader::next(std::array<double, 6>& ray) {

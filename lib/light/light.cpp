@@ -12,7 +12,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 // Polygons are sampled by solid angle when they have few triangles and look larger than this (sr);
 // smaller ones are sampled by area, which is then just as uniform in solid angle.
-constexpr size_t kMaxSolidAngleTriangles = 8;
 constexpr double kMinSolidAngle = 1e-4;
 
 // 1 − cos of the half-angle under which a sphere of radius r is seen from distance d > r, without
@@ -100,38 +99,39 @@ std::optional<LightSample> Light::sampleArea(const dvec3& p, double u, double v)
     return LightSample{dir, dist, dist * dist / (area_ * cosLight), emitter_->emitted(-dir)};
 }
 
-// The triangles of a front-lit polygon as seen from p, when it is sampled by solid angle; their total
-// solid angle is returned (0: sample by area instead).
-double Light::solidAngles(const dvec3& p, SphericalTriangle* out) const {
+// Front-lit polygons with few triangles are sampled by solid angle: their spherical triangles from p.
+LightView Light::view(const dvec3& p) const {
+    LightView v;
+    v.point = p;
     const auto* poly = std::get_if<Polygon>(shape_);
-    if (!poly || poly->triangles.size() > kMaxSolidAngleTriangles) return 0;
-    if (glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return 0;
+    if (!poly || poly->triangles.size() > LightView::kMaxTriangles) return v;
+    if (glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return v;
     double total = 0;
     for (size_t i = 0; i < poly->triangles.size(); ++i) {
         const auto& t = poly->triangles[i];
-        out[i] = SphericalTriangle(p, poly->vertices[t[0]], poly->vertices[t[1]], poly->vertices[t[2]]);
-        total += out[i].solidAngle();
+        v.triangles[i] = SphericalTriangle(p, poly->vertices[t[0]], poly->vertices[t[1]], poly->vertices[t[2]]);
+        total += v.triangles[i].solidAngle();
     }
-    return total >= kMinSolidAngle && std::isfinite(total) ? total : 0;
+    v.solidAngle = total >= kMinSolidAngle && std::isfinite(total) ? total : 0;
+    return v;
 }
 
-std::optional<LightSample> Light::sampleSolidAngle(const dvec3& p, double u, double v, const SphericalTriangle* tris,
-                                                   double total) const {
+std::optional<LightSample> Light::sampleSolidAngle(const LightView& view, double u, double v) const {
     const auto& poly = std::get<Polygon>(*shape_);
     size_t n = poly.triangles.size(), i = 0;
-    double target = u * total, below = 0;
-    while (i + 1 < n && below + tris[i].solidAngle() < target) below += tris[i++].solidAngle();
-    double w = tris[i].solidAngle();
-    dvec3 dir = tris[i].sample(w > 0 ? std::clamp((target - below) / w, 0.0, 1.0) : 0.0, v);
-    double dist = poly.planeDistance(Ray(p, dir));
+    double target = u * view.solidAngle, below = 0;
+    while (i + 1 < n && below + view.triangles[i].solidAngle() < target) below += view.triangles[i++].solidAngle();
+    double w = view.triangles[i].solidAngle();
+    dvec3 dir = view.triangles[i].sample(w > 0 ? std::clamp((target - below) / w, 0.0, 1.0) : 0.0, v);
+    double dist = poly.planeDistance(Ray(view.point, dir));
     double cosLight = -glm::dot(poly.normal, dir);
     if (!(dist > 0) || cosLight <= 0) return std::nullopt;
-    return LightSample{dir, dist, 1 / total, emitter_->emitted(-dir)};
+    return LightSample{dir, dist, 1 / view.solidAngle, emitter_->emitted(-dir)};
 }
 
-std::optional<LightSample> Light::sample(const dvec3& p, double u, double v) const {
-    SphericalTriangle tris[kMaxSolidAngleTriangles];
-    if (double total = solidAngles(p, tris); total > 0) return sampleSolidAngle(p, u, v, tris, total);
+std::optional<LightSample> Light::sample(const LightView& view, double u, double v) const {
+    if (view.solidAngle > 0) return sampleSolidAngle(view, u, v);
+    const dvec3& p = view.point;
     if (isDistant()) {
         dvec3 dir = Frame(direction_).toWorld(uniformCone(u, v, oneMinusCos_));
         return LightSample{dir, std::numeric_limits<double>::infinity(), 1 / (2 * kPi * oneMinusCos_),
@@ -158,8 +158,8 @@ double Light::pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3
         double dc = glm::length(sphere->center - p);
         return dc > sphere->radius ? 1 / (2 * kPi * sphereOneMinusCos(sphere->radius, dc)) : 0;
     }
-    SphericalTriangle tris[kMaxSolidAngleTriangles];
-    if (double total = solidAngles(p, tris); total > 0) return 1 / total;
+    if (std::holds_alternative<Polygon>(*shape_))
+        if (LightView v = view(p); v.solidAngle > 0) return 1 / v.solidAngle;
     double cosLight = -glm::dot(hitNormal, dir);
     return cosLight > 0 ? distance * distance / (area_ * cosLight) : 0;
 }

@@ -18,6 +18,14 @@ struct LightSample {
     Spectrum radiance;
 };
 
+// A source as seen from one shading point: what sampling it there needs, computed once for all its samples.
+struct LightView {
+    static constexpr size_t kMaxTriangles = 8;  // polygons with more are sampled by area
+    dvec3 point;
+    SphericalTriangle triangles[kMaxTriangles];
+    double solidAngle = 0;  // > 0 when the polygon is sampled by solid angle
+};
+
 class Light {
 public:
     // An emitting surface; `surface` is its index in SceneGeometry::surfaces().
@@ -27,9 +35,10 @@ public:
 
     // Radiance-like subdivision: more samples for a source large as seen from p (-ds ratio, ray weight).
     int sampleCount(const dvec3& p, double ratio, double weight) const;
-    // A direction toward the source from p for the point (u, v) of the unit square; nullopt where p cannot
-    // see the source's front or the sample carries no light.
-    std::optional<LightSample> sample(const dvec3& p, double u, double v) const;
+    LightView view(const dvec3& p) const;
+    // A direction toward the source from the view's point for the point (u, v) of the unit square; nullopt
+    // where the point cannot see the source's front or the sample carries no light.
+    std::optional<LightSample> sample(const LightView& view, double u, double v) const;
     // The solid-angle density with which sample() picks the direction that reached point `hit` (with the
     // source's normal there) from p.
     double pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3& hitNormal) const;
@@ -43,9 +52,7 @@ public:
 
 private:
     std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;
-    double solidAngles(const dvec3& p, SphericalTriangle* out) const;
-    std::optional<LightSample> sampleSolidAngle(const dvec3& p, double u, double v, const SphericalTriangle* tris,
-                                                double total) const;
+    std::optional<LightSample> sampleSolidAngle(const LightView& view, double u, double v) const;
     void pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const;
 
     const Shape* shape_ = nullptr;
