@@ -68,3 +68,21 @@ TEST(Integrator, InvisibleSourcesStillLightGlossySurfaces) {
     EXPECT_EQ(b.trace(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
     EXPECT_EQ(a.trace(dvec3(0, 0, 0.5), dvec3(0, 0, 1), 0).value[0], 100.f);
 }
+
+// An antimatter sphere cuts a hole in an opaque ceiling: light passes there and nowhere else.
+TEST(Integrator, AntimatterCutsHolesInTheModifiersItNames) {
+    const std::string scene =
+        "void light lum 0 0 3 100 100 100\n"
+        "lum sphere bulb 0 0 4 0 0 2 0.1\n"
+        "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+        "grey polygon ceiling 0 0 12 -5 -5 1 -5 5 1 5 5 1 5 -5 1\n";
+    const double expected = std::numbers::pi * 100 * 0.05 * 0.05;  // πL(r/d)², d = 2
+    RenderSettings s = fixedSeed();
+    TestScene closed(scene);
+    EXPECT_EQ(Integrator(closed.render, s).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    TestScene holed(scene + "void antimatter hole 1 grey 0 0\nhole sphere cut 0 0 4 0 0 1 0.5\n");
+    Integrator integrator(holed.render, s);
+    EXPECT_NEAR(integrator.irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], expected, 0.005 * expected);
+    // Looking up through the hole, a ray sees the bulb; the antimatter surface itself is invisible.
+    EXPECT_EQ(integrator.trace(dvec3(0), dvec3(0, 0, 1), 0).value[0], 100.f);
+}

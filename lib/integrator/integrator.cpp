@@ -28,6 +28,22 @@ struct Integrator::PathState {
     double sampledDensity = 0;
     double fromWeight = 1;
     int depth = 0;
+    // Antimatter volumes the ray is inside (scene objects), which hide the surfaces they cut.
+    static constexpr int kMaxClips = 8;
+    int clips[kMaxClips];
+    int clipCount = 0;
+
+    bool enters(int antimatter) {
+        for (int i = 0; i < clipCount; ++i)
+            if (clips[i] == antimatter) return false;
+        if (clipCount == kMaxClips) return false;
+        clips[clipCount++] = antimatter;
+        return true;
+    }
+    void leaves(int antimatter) {
+        for (int i = 0; i < clipCount; ++i)
+            if (clips[i] == antimatter) clips[i] = clips[--clipCount];
+    }
 };
 
 struct Integrator::Context {
@@ -112,12 +128,32 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
     return rec;
 }
 
+// Whether the modifier is cut away by an antimatter volume the ray is in.
+bool Integrator::clipped(int modifier, const PathState& state) const {
+    for (int i = 0; i < state.clipCount; ++i) {
+        const std::vector<int>& cut = *scene_.clippedModifiers(state.clips[i]);
+        if (std::find(cut.begin(), cut.end(), modifier) != cut.end()) return true;
+    }
+    return false;
+}
+
+// Antimatter surfaces are invisible; crossing one enters or leaves its volume (it faces outward).
+bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) const {
+    if (!scene_.clippedModifiers(mat)) return false;
+    if (backside) state.leaves(mat);
+    else state.enters(mat);
+    return true;
+}
+
 Spectrum Integrator::radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                               Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
     if (!hit) return escaped(ray, state, record, misEmission);
     const Surface& surface = scene_.geometry().surfaces()[hit->surface];
     int mat = scene_.materialObject(hit->surface);
+    if (state.clipCount > 0 && clipped(mat, state)) return passThrough(ray, *hit, state, ctx, record, misEmission);
+    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, crossed))
+        return passThrough(ray, *hit, crossed, ctx, record, misEmission);
     bool back = glm::dot(hit->normal, ray.dir) > 0;
     Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir,
                std::abs(glm::dot(hit->normal, ray.dir)), back,
@@ -323,7 +359,7 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
             if (e.kind == Emitter::Kind::Spotlight && std::isfinite(s->distance))
                 le *= float(s->distance * s->distance / ((s->distance + e.spotFocus) * (s->distance + e.spotFocus)));
             Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
-                                             light, ctx);
+                                             light, state);
             if (!t.isBlack()) sum += f * le * t * float(1 / lightDensity);
         }
     }
@@ -332,13 +368,20 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
 
 // What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
 // clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
-Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, Context& ctx) const {
+Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state) const {
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
         if (!hit) return light.isDistant() ? t : Spectrum(0.f);
-        if (hit->surface == light.surface()) return t;
         int mat = scene_.materialObject(hit->surface);
+        bool cut = (state.clipCount > 0 && clipped(mat, state)) ||
+                   crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
+        if (cut) {
+            ray.org = hit->point;
+            ray.leaving = hit->surface;
+            continue;
+        }
+        if (hit->surface == light.surface()) return t;
         const Emitter* e = scene_.emitter(mat);
         if (e && (e->kind != Emitter::Kind::Illum)) return Spectrum(0.f);
         if (!e) {

@@ -51,7 +51,9 @@ private:
     Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum shadowTransmittance(Ray ray, const Light& light, Context& ctx) const;
+    Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state) const;
+    bool clipped(int modifier, const PathState& state) const;
+    bool crossesAntimatter(int material, bool backside, PathState& state) const;
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
                float& boost) const;
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;

@@ -13,12 +13,13 @@ const std::set<std::string> kPlannedTypes{
     "texdata", "mixfunc", "mixdata", "mixpict", "mixtext", "mesh", "instance", "mist", "spectrum", "specfile",
     "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2", "WGMDfunc", "interface",
     "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
-    "BRTDfunc", "antimatter"};
+    "BRTDfunc"};
 
 }  // namespace
 
 RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) : scene_(scene) {
     checkTypes();
+    addAntimatter();
     materials_ = makeMaterials(scene, settings);
     emitters_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i)
@@ -41,7 +42,9 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
 
 void RenderScene::checkTypes() const {
     for (const SceneObject& o : scene_.objects) {
-        if (isSurfaceType(o.type) || isMaterialType(o.type) || isEmitterType(o.type) || o.type == "source") continue;
+        if (isSurfaceType(o.type) || isMaterialType(o.type) || isEmitterType(o.type) || o.type == "source" ||
+            o.type == "antimatter")
+            continue;
         if (kPlannedTypes.count(o.type))
             throw Error(o.where, "type '" + o.type + "' (" + o.name + ") is not supported by Brume yet");
         throw Error(o.where, "unknown object type '" + o.type + "' (" + o.name + ")");
@@ -49,9 +52,27 @@ void RenderScene::checkTypes() const {
     for (const SceneObject& o : scene_.objects) {
         if (o.modifier < 0) continue;
         const SceneObject& m = scene_.objects[o.modifier];
-        if (!isMaterialType(m.type) && !isEmitterType(m.type))
+        if (!isMaterialType(m.type) && !isEmitterType(m.type) && m.type != "antimatter")
             throw Error(o.where, "modifier '" + m.name + "' of " + o.type + " \"" + o.name + "\" is a " + m.type +
                                      ", not a material");
+    }
+}
+
+// antimatter: N strings naming the modifiers it cuts (Radiance reference manual, "Antimatter").
+void RenderScene::addAntimatter() {
+    for (int i = 0; i < static_cast<int>(scene_.objects.size()); ++i) {
+        const SceneObject& o = scene_.objects[i];
+        if (o.type != "antimatter") continue;
+        if (o.strings.empty() || !o.integers.empty() || !o.reals.empty())
+            throw Error(o.where, "bad arguments for antimatter \"" + o.name + "\": expected modifier names only");
+        std::vector<int>& cut = antimatter_[i];
+        for (const std::string& name : o.strings) {
+            if (name == "void") continue;
+            auto it = scene_.lastDefinition.find(name);
+            if (it == scene_.lastDefinition.end())
+                throw Error(o.where, "undefined modifier \"" + name + "\" in antimatter \"" + o.name + "\"");
+            cut.push_back(it->second);
+        }
     }
 }
 

@@ -2,6 +2,7 @@
 // and the light sources for next-event estimation.
 #pragma once
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
@@ -23,6 +24,11 @@ public:
     int materialObject(int surface) const { return surfaceMaterial_[surface]; }
     const Material* material(int object) const { return materials_[object].get(); }
     const Emitter* emitter(int object) const { return emitters_[object].get(); }
+    // For an antimatter object: the modifiers whose surfaces it cuts away inside its volume (else nullptr).
+    const std::vector<int>* clippedModifiers(int object) const {
+        auto it = antimatter_.find(object);
+        return it == antimatter_.end() ? nullptr : &it->second;
+    }
     // The light that samples surface s, or -1.
     int lightOfSurface(int surface) const { return surfaceLight_[surface]; }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
@@ -31,6 +37,7 @@ public:
 private:
     void checkTypes() const;
     void addSources();
+    void addAntimatter();
 
     const Scene& scene_;
     std::vector<std::unique_ptr<Material>> materials_;
@@ -39,6 +46,7 @@ private:
     std::vector<int> surfaceMaterial_, surfaceLight_;
     std::vector<Light> lights_;
     std::vector<int> distant_;  // indices into lights_
+    std::unordered_map<int, std::vector<int>> antimatter_;
 };
 
 }  // namespace brume
