@@ -166,6 +166,7 @@ int run(int argc, char** argv) {
     bool done = false;
     std::vector<InputRay> rays;
     std::vector<RayRecord> records;
+    std::vector<RayTree> trees;
     while (!done) {
         rays.clear();
         std::array<double, 6> r;
@@ -183,13 +184,15 @@ int run(int argc, char** argv) {
         }
         if (limit > 0 && count >= limit) done = true;
         records.assign(rays.size(), RayRecord{});
+        trees.assign(writer.tracing() ? rays.size() : 0, RayTree{{}, writer.tracesShadowRays()});
         uint64_t base = uint64_t(count - long(rays.size()));
         tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
             const InputRay& in = rays[i];
             if (in.zero) return;
-            if (o.irradiance) records[i] = integrator.irradiance(in.org, in.dir, base + i);
-            else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(in.org, in.dir, base + i);
-            else records[i] = integrator.trace(in.org, in.dir, base + i, o.limitDistance ? in.maxDistance : 0);
+            RayTree* tree = trees.empty() ? nullptr : &trees[i];
+            if (o.irradiance) records[i] = integrator.irradiance(in.org, in.dir, base + i, tree);
+            else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(in.org, in.dir, base + i, tree);
+            else records[i] = integrator.trace(in.org, in.dir, base + i, o.limitDistance ? in.maxDistance : 0, tree);
         });
         for (size_t i = 0; i < rays.size(); ++i) {
             InputRay in = rays[i];
@@ -200,6 +203,7 @@ int run(int argc, char** argv) {
                 // Radiance reports the sensor ray as it traced it: just above the point, looking down.
                 in.org = in.org + 1.1e-4 * in.dir, in.dir = -in.dir;
             }
+            if (!trees.empty()) writer.writeTree(trees[i]);
             writer.write({in.org, in.dir, &records[i]});
             lastOrg = in.org, lastDir = in.dir;
             if (in.zero) std::fflush(stdout);

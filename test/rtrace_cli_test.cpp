@@ -167,3 +167,15 @@ TEST_F(RtraceCli, AmbientAccuracyWarnsOnceThatItPathTraces) {
     EXPECT_NE(r.err.find("path tracing"), std::string::npos);
     EXPECT_EQ(r.err.find("path tracing"), r.err.rfind("path tracing"));
 }
+
+// Trace mode: each ray of the tree after its children, one tab per level, then the per-ray fields; -oT
+// adds the shadow rays.
+TEST_F(RtraceCli, TraceOutputPrintsRayTreesChildrenFirst) {
+    Output r = rtrace("-h- -u- -oLtsm s.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "floor\tgrey\t\n1.000000e+00\t\n");
+    Output shadows = rtrace("-h- -u- -oTs s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_EQ(shadows.out, "\tbulb\t\nfloor\t\n");
+    Output header = rtrace("-ovts s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_EQ(header.out.find("NCOMP="), std::string::npos);
+}

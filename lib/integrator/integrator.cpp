@@ -48,6 +48,8 @@ struct Integrator::PathState {
 
 struct Integrator::Context {
     Random rng;
+    RayTree* tree = nullptr;
+    int depth = 0;  // of the ray being traced in its tree
 };
 
 Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
@@ -68,8 +70,9 @@ double Integrator::primaryTmin(const dvec3& org) const {
 
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
 
-RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance) const {
-    Context ctx{Random(seedFor(index), index)};
+RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance,
+                            RayTree* tree) const {
+    Context ctx{Random(seedFor(index), index), tree};
     RayRecord rec;
     rec.point = org;
     Ray ray{org, glm::normalize(dir)};
@@ -81,8 +84,8 @@ RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, 
 
 // Irradiance as Radiance's -I computes it: a white Lambertian sensor of reflectance π, so that its
 // outgoing "radiance" is the irradiance E itself.
-RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t index) const {
-    Context ctx{Random(seedFor(index), index)};
+RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t index, RayTree* tree) const {
+    Context ctx{Random(seedFor(index), index), tree};
     dvec3 n = glm::normalize(normal);
     Shading sh{p + primaryTmin(p) * n, n, -n, 1.0, false, false, 0.0};
     Lobes lobes;
@@ -90,18 +93,18 @@ RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t i
     RayRecord rec;
     rec.point = p;
     rec.normal = rec.surfaceNormal = n;
-    rec.value = shade(sh, lobes, -1, PathState{}, ctx, nullptr);
+    rec.value = shadeAsRoot(sh, lobes, -1, ctx, rec, -n);
     return rec;
 }
 
-RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index) const {
+RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index, RayTree* tree) const {
     Ray ray{org, glm::normalize(dir)};
     ray.tmin = primaryTmin(org);
     RayRecord rec;
     rec.point = org;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
-        if (!hit) return trace(org, dir, index);  // escapes: what it sees is the value
+        if (!hit) return trace(org, dir, index, 0, tree);  // escapes: what it sees is the value
         int mat = scene_.materialObject(hit->surface);
         const SceneObject& m = scene_.scene().objects[mat];
         bool transparent = m.type == "glass" || m.type == "trans" || m.type == "dielectric" ||
@@ -110,19 +113,19 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
             ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
             continue;
         }
-        if (scene_.emitter(mat)) return trace(org, dir, index);
+        if (scene_.emitter(mat)) return trace(org, dir, index, 0, tree);
         dvec3 n = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
-        Context ctx{Random(seedFor(index), index)};
+        Context ctx{Random(seedFor(index), index), tree};
         Shading sh{hit->point, n, -n, 1.0, false, false, hit->t};
         Lobes lobes;
         lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
-        rec.value = shade(sh, lobes, hit->surface, PathState{}, ctx, nullptr);
         rec.firstLength = rec.effectiveLength = glm::length(hit->point - org);
         rec.point = hit->point;
         rec.normal = n;
         rec.surfaceNormal = hit->normal;
         rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
         rec.modifierObject = mat;
+        rec.value = shadeAsRoot(sh, lobes, hit->surface, ctx, rec, ray.dir);
         return rec;
     }
     return rec;
@@ -145,8 +148,35 @@ bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) con
     return true;
 }
 
+// Shading that stands for a primary ray (the -I sensor, the -i surface): its rays are its children.
+Spectrum Integrator::shadeAsRoot(const Shading& sh, const Lobes& lobes, int surface, Context& ctx, RayRecord& rec,
+                                 const dvec3& dir) const {
+    ctx.depth = ctx.tree ? 1 : 0;
+    Spectrum value = shade(sh, lobes, surface, PathState{}, ctx, nullptr);
+    if (ctx.tree) {
+        rec.value = value;
+        ctx.tree->rays.push_back({0, sh.point, dir, rec});
+    }
+    return value;
+}
+
+// The radiance along a ray; with a ray tree to fill, the ray is recorded after its children.
 Spectrum Integrator::radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                               Spectrum* misEmission) const {
+    if (!ctx.tree) return radianceAlong(ray, state, ctx, record, misEmission);
+    RayRecord own;
+    own.point = ray.org;
+    RayRecord* rec = record ? record : &own;
+    ++ctx.depth;
+    Spectrum value = radianceAlong(ray, state, ctx, rec, misEmission);
+    --ctx.depth;
+    rec->value = value;
+    ctx.tree->rays.push_back({ctx.depth, ray.org, ray.dir, *rec});
+    return value;
+}
+
+Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
+                                   Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
     if (!hit) return escaped(ray, state, record, misEmission);
     const Surface& surface = scene_.geometry().surfaces()[hit->surface];
@@ -360,6 +390,15 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
                 le *= float(s->distance * s->distance / ((s->distance + e.spotFocus) * (s->distance + e.spotFocus)));
             Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
                                              light, state);
+            if (ctx.tree && ctx.tree->withShadowRays) {
+                RayRecord shadow;
+                shadow.value = le * t;
+                shadow.firstLength = shadow.effectiveLength = s->distance;
+                shadow.point = sh.point + (std::isfinite(s->distance) ? s->distance : 0.0) * s->dir;
+                shadow.surfaceObject = light.object();
+                shadow.modifierObject = scene_.scene().objects[light.object()].modifier;
+                ctx.tree->rays.push_back({ctx.depth, sh.point, s->dir, shadow});
+            }
             if (!t.isBlack()) sum += f * le * t * float(1 / lightDensity);
         }
     }

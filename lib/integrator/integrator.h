@@ -3,6 +3,7 @@
 // (-ad paths at the first bounce, one after it, -ab bounces), specular and glossy rays, Russian roulette.
 #pragma once
 #include <limits>
+#include <vector>
 
 #include "integrator/render_scene.h"
 #include "integrator/settings.h"
@@ -24,28 +25,47 @@ struct RayRecord {
     double mirroredLength = std::numeric_limits<double>::infinity();  // x
 };
 
+// One ray of a primary ray's tree, for rtrace's trace output (-ot, -oT): depth 0 is the primary ray.
+struct TracedRay {
+    int depth;
+    dvec3 org, dir;
+    RayRecord record;
+};
+
+// Where the rays of a tree are collected, children before their parent, as Radiance prints them.
+struct RayTree {
+    std::vector<TracedRay> rays;
+    bool withShadowRays = false;  // -oT
+};
+
 class Integrator {
 public:
     Integrator(const RenderScene& scene, const RenderSettings& settings);
 
     // Radiance arriving at org from direction dir (the ray's value). `index` seeds the ray's samples;
     // maxDistance > 0 limits how far the ray looks (rtrace -ld).
-    RayRecord trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance = 0) const;
+    // `tree`, if given, receives every ray traced for it.
+    RayRecord trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance = 0,
+                    RayTree* tree = nullptr) const;
     // Irradiance at point p on a surface facing n (rtrace -I).
-    RayRecord irradiance(const dvec3& p, const dvec3& n, uint64_t index) const;
+    RayRecord irradiance(const dvec3& p, const dvec3& n, uint64_t index, RayTree* tree = nullptr) const;
     // Irradiance at the first opaque surface the ray meets; light sources give their radiance (rtrace -i).
-    RayRecord irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index) const;
+    RayRecord irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index, RayTree* tree = nullptr) const;
 
 private:
     struct PathState;
     struct Context;
     Spectrum radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                       Spectrum* misEmission) const;
+    Spectrum radianceAlong(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
+                           Spectrum* misEmission) const;
     Spectrum escaped(const Ray& ray, const PathState& state, RayRecord* record, Spectrum* misEmission) const;
     Spectrum emitterHit(const Ray& ray, const struct SurfaceHit& hit, const struct Shading& sh, const Emitter& e,
                         const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
                          RayRecord* record, Spectrum* misEmission) const;
+    Spectrum shadeAsRoot(const Shading& sh, const Lobes& lobes, int surface, Context& ctx, RayRecord& rec,
+                         const dvec3& dir) const;
     Spectrum shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
                    RayRecord* record) const;
     Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;

@@ -29,22 +29,24 @@ void encodeRgbe(float r, float g, float b, unsigned char out[4]) {
 ValueWriter::ValueWriter(std::FILE* out, const std::string& spec, char format, const Scene& scene)
     : out_(out), format_(format), scene_(scene) {
     if (spec.empty()) throw Error("empty output specification");
+    std::string* into = &perRay_;
     for (size_t i = 0; i < spec.size(); ++i) {
         char c = spec[i];
         if (c == 't' || c == 'T') {
-            if (i + 1 < spec.size()) throw Error("trace output (-ot, -oT) is not supported yet");
-            continue;  // a trailing t does nothing, as in Radiance
+            if (i + 1 < spec.size()) into = &traced_, shadowRays_ = shadowRays_ || c == 'T';
+            continue;  // a final t does nothing, as in Radiance
         }
         if (kLetters.find(c) == std::string::npos) throw Error(std::string("unrecognized output option '") + c + "'");
-        spec_ += c;
+        *into += c;
     }
-    if (format_ == 'c' && spec_ != "v" && spec_ != "r" && spec_ != "x")
+    if (format_ == 'c' && (tracing() || (perRay_ != "v" && perRay_ != "r" && perRay_ != "x")))
         throw Error("color format only with -ov, -or, -ox");
 }
 
 int ValueWriter::components() const {
+    if (tracing()) return 0;
     int n = 0;
-    for (char c : spec_) {
+    for (char c : perRay_) {
         if (std::string("odvVWpnNrx").find(c) != std::string::npos) n += 3;
         else if (std::string("wlLRX").find(c) != std::string::npos) n += 1;
         else if (c == 'c') n += 2;
@@ -91,10 +93,23 @@ void ValueWriter::text(const std::string& s) { std::fprintf(out_, "%s\t", s.c_st
 std::string ValueWriter::objectName(int object) const { return object < 0 ? "*" : scene_.objects[object].name; }
 
 void ValueWriter::write(const OutputRay& ray) {
+    fields(perRay_, ray);
+    if (format_ == 'a' && !perRay_.empty()) std::fputc('\n', out_);
+}
+
+void ValueWriter::writeTree(const RayTree& tree) {
+    for (const TracedRay& t : tree.rays) {
+        for (int i = 0; i < t.depth; ++i) std::fputc('\t', out_);
+        fields(traced_, {t.org, t.dir, &t.record});
+        if (format_ == 'a') std::fputc('\n', out_);
+    }
+}
+
+void ValueWriter::fields(const std::string& spec, const OutputRay& ray) {
     const RayRecord& r = *ray.record;
     bool hit = r.surfaceObject >= 0;       // a surface, or a source at infinity
     bool local = std::isfinite(r.firstLength);
-    for (char c : spec_) {
+    for (char c : spec) {
         switch (c) {
             case 'o': reals(&ray.org.x, 3); break;
             case 'd': reals(&ray.dir.x, 3); break;
@@ -146,7 +161,6 @@ void ValueWriter::write(const OutputRay& ray) {
             case '~': text("~"); break;
         }
     }
-    if (format_ == 'a' && !spec_.empty()) std::fputc('\n', out_);
 }
 
 }  // namespace brume

@@ -18,20 +18,28 @@ class ValueWriter {
 public:
     // Throws Error for an unknown letter or a format that cannot carry the fields (-fc).
     ValueWriter(std::FILE* out, const std::string& spec, char format, const Scene& scene);
-    // Number of values per ray (the header's NCOMP).
+    // Number of values per ray (the header's NCOMP); 0 in trace mode, as Radiance.
     int components() const;
     // "FORMAT=..." value for the header.
     std::string formatName() const;
+    // Trace mode (-ot...): every ray of each tree is printed; -oT adds shadow rays.
+    bool tracing() const { return !traced_.empty(); }
+    bool tracesShadowRays() const { return shadowRays_; }
+    // The per-ray fields (letters before any t/T) of one input ray.
     void write(const OutputRay& ray);
+    // The trace lines of one input ray's tree: one tab per depth, then the letters after t/T.
+    void writeTree(const RayTree& tree);
 
 private:
+    void fields(const std::string& spec, const OutputRay& ray);
     void reals(const double* v, int n);
     void color(const Spectrum& c);
     void text(const std::string& s);
     std::string objectName(int object) const;
 
     std::FILE* out_;
-    std::string spec_;
+    std::string perRay_, traced_;
+    bool shadowRays_ = false;
     char format_;
     const Scene& scene_;
 };
