@@ -199,7 +199,7 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
     if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, *hit, sh, *e, state, ctx, record, misEmission);
     Lobes lobes;
     if (!scene_.material(mat)->scatter(sh, lobes)) return passThrough(ray, *hit, state, ctx, record, misEmission);
-    return shade(sh, lobes, hit->surface, state, ctx, record) * lobes.incomingAttenuation;
+    return shade(sh, lobes, hit->surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
 }
 
 Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
@@ -237,7 +237,8 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
             const Emitter& e = light.emitter();
             if ((e.kind == Emitter::Kind::Glow) != glows || !light.distantContains(ray.dir)) continue;
             if (e.kind == Emitter::Kind::Illum) {
-                if (state.kind == PathState::Kind::Sampled) return Spectrum(0.f);
+                if (state.kind == PathState::Kind::Sampled)
+                    return sampledSourceShare(e.emitted(-ray.dir), li, state, ray, nullptr, misEmission);
                 continue;
             }
             if (record) {  // a source at infinity: named, facing the ray, at no distance
@@ -248,8 +249,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
             Spectrum le = e.emitted(-ray.dir);
             if (glows) return le;
             if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
-            if (misEmission) *misEmission += le * float(misWeightForLight(light, state, ray, nullptr));
-            return Spectrum(0.f);
+            return sampledSourceShare(le, li, state, ray, nullptr, misEmission);
         }
     }
     return Spectrum(0.f);
@@ -257,13 +257,17 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
 
 Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const Emitter& e,
                                 const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const {
+    int li = scene_.lightOfSurface(hit.surface);
+    bool sampled = state.kind == PathState::Kind::Sampled;
     if (e.kind == Emitter::Kind::Illum) {
-        // Seen by rays, an illum is its alternate material, or nothing at all.
+        // A sampled ray meeting a window's front finds light that next-event estimation counts.
+        if (sampled && !sh.backside && li >= 0) return sampledSourceShare(e.emitted(-ray.dir), li, state, ray, &hit, misEmission);
+        // Otherwise an illum is its alternate material, or nothing at all.
         if (e.alternate < 0) return passThrough(ray, hit, state, ctx, record, misEmission);
         Lobes lobes;
         const Material* alt = scene_.material(e.alternate);
         if (!alt || !alt->scatter(sh, lobes)) return passThrough(ray, hit, state, ctx, record, misEmission);
-        return shade(sh, lobes, hit.surface, state, ctx, record) * lobes.incomingAttenuation;
+        return shade(sh, lobes, hit.surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
     }
     if (sh.backside) {  // emitters radiate from their front only
         if (settings_.materials.backVisible) return Spectrum(0.f);
@@ -272,12 +276,18 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     bool distantGlow = e.kind == Emitter::Kind::Glow && e.glowRadius >= 0 && hit.t > e.glowRadius;
     Spectrum le = e.emitted(-ray.dir);
     // -dv- hides sources from the rays that would see them, not the direct light sampled rays carry.
-    if (state.kind != PathState::Kind::Sampled)
-        return settings_.directVisible || distantGlow ? le : Spectrum(0.f);
-    if (e.kind == Emitter::Kind::Glow) return distantGlow ? le : Spectrum(0.f);  // near ones: next-event's job
-    int li = scene_.lightOfSurface(hit.surface);
+    if (!sampled) return settings_.directVisible || distantGlow ? le : Spectrum(0.f);
+    if (distantGlow) return le;
+    if (e.kind == Emitter::Kind::Glow && e.glowRadius < 0) return Spectrum(0.f);  // never seen by sampled rays
     if (li < 0) return le;  // not sampled as a source: only paths find it
-    if (misEmission) *misEmission += le * float(misWeightForLight(scene_.lights()[li], state, ray, &hit));
+    return sampledSourceShare(le, li, state, ray, &hit, misEmission);
+}
+
+// A sampled ray that meets a source next-event estimation samples: its multiple-importance share goes to
+// the caller, which weighs it by the lobe that sampled the ray (diffuse lobes leave it all to next-event).
+Spectrum Integrator::sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
+                                        const SurfaceHit* hit, Spectrum* misEmission) const {
+    if (misEmission) *misEmission += le * float(misWeightForLight(scene_.lights()[light], state, ray, hit));
     return Spectrum(0.f);
 }
 
@@ -305,7 +315,7 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
 }
 
 Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
-                           RayRecord* record) const {
+                           RayRecord* record, Spectrum* misEmission) const {
     Spectrum value(0.f);
     double strongest = 0;
     for (int k = 0; k < lobes.deltaCount; ++k) {
@@ -316,10 +326,13 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
         // Shadow rays cross straight-through transmissions too, so sources seen through them were already
         // counted at the sampled ray's origin; any other specular bend makes a path only rays can find.
         bool straight = d.transmits && glm::dot(glm::normalize(d.dir), sh.dir) > 1 - 1e-12;
-        if (!(straight && state.kind == PathState::Kind::Sampled)) child.kind = PathState::Kind::Specular;
+        bool stillSampled = straight && state.kind == PathState::Kind::Sampled;
+        if (!stillSampled) child.kind = PathState::Kind::Specular;
         RayRecord childRecord;
+        Spectrum share(0.f);
         Spectrum li = radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
-                               child, ctx, record ? &childRecord : nullptr, nullptr);
+                               child, ctx, record ? &childRecord : nullptr, stillSampled ? &share : nullptr);
+        if (misEmission && !share.isBlack()) *misEmission += d.weight * share * boost;
         Spectrum part = d.weight * li * boost;
         value += part;
         if (record) {
@@ -422,13 +435,18 @@ Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState 
         }
         if (hit->surface == light.surface()) return t;
         const Emitter* e = scene_.emitter(mat);
-        if (e && (e->kind != Emitter::Kind::Illum)) return Spectrum(0.f);
-        if (!e) {
-            bool back = glm::dot(hit->normal, ray.dir) > 0;
+        bool back = glm::dot(hit->normal, ray.dir) > 0;
+        if (e && e->kind != Emitter::Kind::Illum) return Spectrum(0.f);  // another source blocks
+        // An illum stands for the light coming through it: it hides other illums and glows behind it.
+        Emitter::Kind target = light.emitter().kind;
+        if (e && !back && (target == Emitter::Kind::Illum || target == Emitter::Kind::Glow)) return Spectrum(0.f);
+        // Otherwise a shadow ray crosses an illum as it would its alternate material.
+        const Material* m = e ? (e->alternate >= 0 ? scene_.material(e->alternate) : nullptr) : scene_.material(mat);
+        if (m) {
             Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir, std::abs(glm::dot(hit->normal, ray.dir)),
                        back, false, hit->t};
             dvec3 dir = ray.dir;
-            t *= scene_.material(mat)->shadowTransmission(sh, dir);
+            t *= m->shadowTransmission(sh, dir);
             if (t.maxValue() <= 1e-6f) return Spectrum(0.f);
             ray.dir = dir;
         }

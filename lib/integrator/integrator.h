@@ -67,7 +67,9 @@ private:
     Spectrum shadeAsRoot(const Shading& sh, const Lobes& lobes, int surface, Context& ctx, RayRecord& rec,
                          const dvec3& dir) const;
     Spectrum shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
-                   RayRecord* record) const;
+                   RayRecord* record, Spectrum* misEmission = nullptr) const;
+    Spectrum sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
+                                const SurfaceHit* hit, Spectrum* misEmission) const;
     Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;

@@ -43,11 +43,13 @@ Light::Light(const Surface& surface, int surfaceIndex, const Emitter* emitter)
 
 Light::Light(const dvec3& direction, double angle, const Emitter* emitter, int object)
     : object_(object), emitter_(emitter), direction_(glm::normalize(direction)) {
-    double half = std::min(angle, kPi) / 2;
-    oneMinusCos_ = 2 * std::sin(half / 2) * std::sin(half / 2);
+    double half = std::min(angle, 2 * kPi) / 2;
+    // 2 sin²(θ/2) keeps the sun's tiny cone exact; 1 − cos θ keeps a hemisphere's edge exactly at 1.
+    oneMinusCos_ = half < 0.5 ? 2 * std::sin(half / 2) * std::sin(half / 2) : 1 - std::cos(half);
 }
 
-bool Light::distantContains(const dvec3& d) const { return 1 - glm::dot(d, direction_) <= oneMinusCos_; }
+// With a margin of a few ulps, so a hemisphere's edge (the horizon of a 180° sky) belongs to it.
+bool Light::distantContains(const dvec3& d) const { return 1 - glm::dot(d, direction_) <= oneMinusCos_ + 1e-12; }
 
 int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
     if (ratio <= 0) return 1;

@@ -47,7 +47,8 @@ bool NormalMaterial::scatter(const Shading& s, Lobes& lobes) const {
     lobes.ambient = lobes.diffuse;
     lobes.ambientTrans = lobes.diffuseTrans;
     if (pure()) {
-        lobes.fresnelDiffuse = fresnel > 0 && rspec >= 0.017999;
+        // Radiance reduces the diffuse part per source whenever the pure specular part is not negligible.
+        lobes.fresnelDiffuse = rspec >= 0.017999;
         if (rspec > kTiny) lobes.addDelta(s.dir + 2 * s.cosine * s.normal, scolor, false);
         if (tspec > kTiny) lobes.addDelta(s.dir, color_ * float(tspec), true);
         return true;
