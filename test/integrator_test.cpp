@@ -86,3 +86,48 @@ TEST(Integrator, AntimatterCutsHolesInTheModifiersItNames) {
     // Looking up through the hole, a ray sees the bulb; the antimatter surface itself is invisible.
     EXPECT_EQ(integrator.trace(dvec3(0), dvec3(0, 0, 1), 0).value[0], 100.f);
 }
+
+namespace {
+// A sphere lamp under a flat mirror ceiling: a sensor off to the side sees the lamp and, in the mirror,
+// its image twice as high (each fully visible), E = πL Σ (r/d)² cos β, the image's term times ρ.
+const char* kLampUnderMirror =
+    "void light lum 0 0 3 100 100 100\n"
+    "lum sphere bulb 0 0 4 0 0 2 0.5\n"
+    "void mirror silver 0 0 3 .8 .8 .8\n"
+    "silver polygon ceiling 0 0 12 -10 -10 3 -10 10 3 10 10 3 10 -10 3\n";
+
+double lampAndImage() {
+    double direct = std::numbers::pi * 100 * (0.5 * 0.5 / 13) * (2 / std::sqrt(13.0));
+    double image = 0.8 * std::numbers::pi * 100 * (0.5 * 0.5 / 25) * 0.8;
+    return direct + image;
+}
+}  // namespace
+
+// Tolerance 0.5%: both cones are sampled exactly; what varies is the cosine across them.
+TEST(Integrator, MirrorImagesOfSourcesLightSurfacesWithoutBounces) {
+    TestScene t(kLampUnderMirror);
+    RenderSettings s = fixedSeed();
+    s.sourceSubdivision = 0.02;
+    Integrator integrator(t.render, s);
+    EXPECT_NEAR(meanIrradiance(integrator, dvec3(3, 0, 0), dvec3(0, 0, 1), 8), lampAndImage(), 0.005 * lampAndImage());
+    s.directRelays = 0;  // -dr 0: the image is not a source; only interreflection paths could find it
+    Integrator without(t.render, s);
+    double lampOnly = lampAndImage() - 0.8 * std::numbers::pi * 100 * (0.5 * 0.5 / 25) * 0.8;
+    EXPECT_NEAR(meanIrradiance(without, dvec3(3, 0, 0), dvec3(0, 0, 1), 8), lampOnly, 0.005 * lampOnly);
+}
+
+// With -ab, paths that reach the lamp through the mirror are counted once: by its image when -dr is on,
+// by the paths themselves when it is off. Tolerance 3%: the -dr 0 estimate rests on rare path hits.
+TEST(Integrator, PathsThroughMirrorsAreCountedOnceWithOrWithoutImages) {
+    TestScene t(kLampUnderMirror);
+    RenderSettings s = fixedSeed();
+    s.ambientBounces = 1;
+    s.ambientDivisions = 8192;
+    Integrator with(t.render, s);
+    s.directRelays = 0;
+    Integrator without(t.render, s);
+    double a = meanIrradiance(with, dvec3(3, 0, 0), dvec3(0, 0, 1), 8);
+    double b = meanIrradiance(without, dvec3(3, 0, 0), dvec3(0, 0, 1), 8);
+    EXPECT_NEAR(a, lampAndImage(), 0.005 * lampAndImage());
+    EXPECT_NEAR(b, a, 0.03 * a);
+}

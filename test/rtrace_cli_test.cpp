@@ -174,7 +174,7 @@ TEST_F(RtraceCli, TraceOutputPrintsRayTreesChildrenFirst) {
     Output r = rtrace("-h- -u- -oLtsm s.rad", "0 0 1 0 0 -1\n");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.out, "floor\tgrey\t\n1.000000e+00\t\n");
-    Output shadows = rtrace("-h- -u- -oTs s.rad", "0 0 1 0 0 -1\n");
+    Output shadows = rtrace("-h- -u- -ds 0 -oTs s.rad", "0 0 1 0 0 -1\n");  // one shadow ray per source
     EXPECT_EQ(shadows.out, "\tbulb\t\nfloor\t\n");
     Output header = rtrace("-ovts s.rad", "0 0 1 0 0 -1\n");
     EXPECT_EQ(header.out.find("NCOMP="), std::string::npos);

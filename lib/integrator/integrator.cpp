@@ -27,7 +27,11 @@ struct Integrator::PathState {
     dvec3 from{0};
     double sampledDensity = 0;
     double fromWeight = 1;
+    double fromSubdivision = 0;  // the -ds ratio next-event estimation used there
     int depth = 0;
+    // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
+    // next-event estimation through their mirror images.
+    int viaMirror = -1;
     // Antimatter volumes the ray is inside (scene objects), which hide the surfaces they cut.
     static constexpr int kMaxClips = 8;
     int clips[kMaxClips];
@@ -66,6 +70,12 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
 // hits closer than 1e-6, ignore those, but relative to the scene's and the point's size.
 double Integrator::primaryTmin(const dvec3& org) const {
     return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
+}
+
+// Shadow rays per source: twice as many per axis where a primary ray lands (or at a sensor), whose value
+// is the answer itself, than deeper in a path, where many paths average.
+double Integrator::subdivision(const PathState& state) const {
+    return settings_.sourceSubdivision * (state.depth == 0 ? 0.5 : 1.0);
 }
 
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
@@ -225,7 +235,7 @@ double Integrator::misWeightForLight(const Light& light, const PathState& state,
     double dist = hit ? glm::length(hit->point - state.from) : std::numeric_limits<double>::infinity();
     dvec3 normal = hit ? hit->normal : dvec3(0);
     double lightDensity = light.pdf(state.from, ray.dir, dist, normal) *
-                          light.sampleCount(state.from, settings_.sourceSubdivision, state.fromWeight);
+                          light.sampleCount(state.from, state.fromSubdivision, state.fromWeight);
     return powerHeuristic(state.sampledDensity, lightDensity);
 }
 
@@ -237,6 +247,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
             const Emitter& e = light.emitter();
             if ((e.kind == Emitter::Kind::Glow) != glows || !light.distantContains(ray.dir)) continue;
             if (e.kind == Emitter::Kind::Illum) {
+                if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
                 if (state.kind == PathState::Kind::Sampled)
                     return sampledSourceShare(e.emitted(-ray.dir), li, state, ray, nullptr, misEmission);
                 continue;
@@ -248,6 +259,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
             }
             Spectrum le = e.emitted(-ray.dir);
             if (glows) return le;
+            if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
             if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
             return sampledSourceShare(le, li, state, ray, nullptr, misEmission);
         }
@@ -260,7 +272,9 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     int li = scene_.lightOfSurface(hit.surface);
     bool sampled = state.kind == PathState::Kind::Sampled;
     if (e.kind == Emitter::Kind::Illum) {
-        // A sampled ray meeting a window's front finds light that next-event estimation counts.
+        // A sampled ray meeting a window's front finds light that next-event estimation counts (through the
+        // mirror's image if a mirror sent it here).
+        if (!sh.backside && li >= 0 && state.viaMirror >= 0) return Spectrum(0.f);
         if (sampled && !sh.backside && li >= 0) return sampledSourceShare(e.emitted(-ray.dir), li, state, ray, &hit, misEmission);
         // Otherwise an illum is its alternate material, or nothing at all.
         if (e.alternate < 0) return passThrough(ray, hit, state, ctx, record, misEmission);
@@ -275,6 +289,7 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     }
     bool distantGlow = e.kind == Emitter::Kind::Glow && e.glowRadius >= 0 && hit.t > e.glowRadius;
     Spectrum le = e.emitted(-ray.dir);
+    if (state.viaMirror >= 0 && li >= 0 && e.kind != Emitter::Kind::Glow) return Spectrum(0.f);  // via the image
     // -dv- hides sources from the rays that would see them, not the direct light sampled rays carry.
     if (!sampled) return settings_.directVisible || distantGlow ? le : Spectrum(0.f);
     if (distantGlow) return le;
@@ -298,6 +313,7 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
     child.weight = parent.weight * w;
     child.reflections = parent.reflections + (reflection ? 1 : 0);
     child.depth = parent.depth + 1;
+    child.viaMirror = -1;
     boost = 1.f;
     if (!(child.weight > 0) || child.depth > kSafetyDepth) return false;
     int lr = settings_.maxReflections;
@@ -328,6 +344,8 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
         bool straight = d.transmits && glm::dot(glm::normalize(d.dir), sh.dir) > 1 - 1e-12;
         bool stillSampled = straight && state.kind == PathState::Kind::Sampled;
         if (!stillSampled) child.kind = PathState::Kind::Specular;
+        if (state.kind == PathState::Kind::Sampled && !d.transmits && mirrorImagesOn() && scene_.isPlanarMirror(surface))
+            child.viaMirror = surface;
         RayRecord childRecord;
         Spectrum share(0.f);
         Spectrum li = radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
@@ -363,11 +381,10 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
 Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
                             Context& ctx) const {
     Spectrum sum(0.f);
-    dvec3 wo = -sh.dir;
     for (const Light& light : scene_.lights()) {
         const Emitter& e = light.emitter();
         if (!e.isDirectSource() || (surface >= 0 && light.surface() == surface)) continue;
-        int count = light.sampleCount(sh.point, settings_.sourceSubdivision, state.weight);
+        int count = light.sampleCount(sh.point, subdivision(state), state.weight);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         LightView view = light.view(sh.point);
         for (int k = 0; k < count; ++k) {
@@ -376,43 +393,106 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
             auto s = light.sample(view, u, v);
             if (!s || s->radiance.isBlack()) continue;
             if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
-            double cosL = glm::dot(sh.normal, s->dir);
             double lightDensity = s->pdf * count;
-            Spectrum f(0.f);
-            auto add = [&](const Spectrum& coef, double brdf, bool sampled, double density) {
-                double w = sampled ? powerHeuristic(lightDensity, density) : 1.0;
-                f += coef * float(brdf * std::abs(cosL) * w);
-            };
-            if (cosL > 0) {
-                double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(cosL) : 1.0;
-                if (!lobes.diffuse.isBlack()) add(lobes.diffuse, fresnel / kPi, false, 0);
-                if (!lobes.glossy.isBlack())
-                    add(lobes.glossy, wardBrdf(wo, s->dir, sh.normal, lobes.alpha2), lobes.sampleGlossy,
-                        wardPdf(wo, s->dir, sh.normal, lobes.alpha2));
-            } else if (cosL < 0) {
-                double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(-cosL) : 1.0;
-                if (!lobes.diffuseTrans.isBlack()) add(lobes.diffuseTrans, fresnel / kPi, false, 0);
-                if (!lobes.glossyTrans.isBlack())
-                    add(lobes.glossyTrans, gaussianBtdf(sh.dir, s->dir, lobes.alphaT2, sh.cosine, -cosL),
-                        lobes.sampleGlossyTrans, gaussianTransmissionPdf(sh.dir, s->dir, lobes.alphaT2));
-            }
+            Spectrum f = response(sh, lobes, s->dir, lightDensity);
             if (f.isBlack()) continue;
-            Spectrum le = s->radiance;
-            // Radiance's spotlight focus: the source acts as if it were f farther behind its surface.
-            if (e.kind == Emitter::Kind::Spotlight && std::isfinite(s->distance))
-                le *= float(s->distance * s->distance / ((s->distance + e.spotFocus) * (s->distance + e.spotFocus)));
+            Spectrum le = sourceRadiance(light, *s);
             Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
                                              light, state);
-            if (ctx.tree && ctx.tree->withShadowRays) {
-                RayRecord shadow;
-                shadow.value = le * t;
-                shadow.firstLength = shadow.effectiveLength = s->distance;
-                shadow.point = sh.point + (std::isfinite(s->distance) ? s->distance : 0.0) * s->dir;
-                shadow.surfaceObject = light.object();
-                shadow.modifierObject = scene_.scene().objects[light.object()].modifier;
-                ctx.tree->rays.push_back({ctx.depth, sh.point, s->dir, shadow});
-            }
+            if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
             if (!t.isBlack()) sum += f * le * t * float(1 / lightDensity);
+        }
+    }
+    if (mirrorImagesOn()) sum += directViaMirrors(sh, lobes, surface, state, ctx);
+    return sum;
+}
+
+// The lobes' response f·|cos| to light from direction l. A glossy lobe that is also sampled by rays takes
+// its share against the source's sampling density (power heuristic); lightDensity 0 gives every lobe
+// all of it (sources no ray will count).
+Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity) const {
+    dvec3 wo = -sh.dir;
+    double cosL = glm::dot(sh.normal, l);
+    Spectrum f(0.f);
+    auto add = [&](const Spectrum& coef, double brdf, bool sampled, double density) {
+        double w = sampled && lightDensity > 0 ? powerHeuristic(lightDensity, density) : 1.0;
+        f += coef * float(brdf * std::abs(cosL) * w);
+    };
+    if (cosL > 0) {
+        double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(cosL) : 1.0;
+        if (!lobes.diffuse.isBlack()) add(lobes.diffuse, fresnel / kPi, false, 0);
+        if (!lobes.glossy.isBlack())
+            add(lobes.glossy, wardBrdf(wo, l, sh.normal, lobes.alpha2), lobes.sampleGlossy,
+                wardPdf(wo, l, sh.normal, lobes.alpha2));
+    } else if (cosL < 0) {
+        double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(-cosL) : 1.0;
+        if (!lobes.diffuseTrans.isBlack()) add(lobes.diffuseTrans, fresnel / kPi, false, 0);
+        if (!lobes.glossyTrans.isBlack())
+            add(lobes.glossyTrans, gaussianBtdf(sh.dir, l, lobes.alphaT2, sh.cosine, -cosL), lobes.sampleGlossyTrans,
+                gaussianTransmissionPdf(sh.dir, l, lobes.alphaT2));
+    }
+    return f;
+}
+
+// The radiance a source sample sends, with Radiance's spotlight focus: a spotlight acts as if it were its
+// focal distance farther behind its surface.
+Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s) const {
+    const Emitter& e = light.emitter();
+    Spectrum le = s.radiance;
+    if (e.kind == Emitter::Kind::Spotlight && std::isfinite(s.distance))
+        le *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
+    return le;
+}
+
+void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
+                                 const Spectrum& value) const {
+    RayRecord shadow;
+    shadow.value = value;
+    shadow.firstLength = shadow.effectiveLength = s.distance;
+    shadow.point = from + (std::isfinite(s.distance) ? s.distance : 0.0) * s.dir;
+    shadow.surfaceObject = light.object();
+    shadow.modifierObject = scene_.scene().objects[light.object()].modifier;
+    ctx.tree->rays.push_back({ctx.depth, from, s.dir, shadow});
+}
+
+// Sources seen in flat mirrors (Radiance's virtual sources, one relay): each source is sampled as seen
+// from the shading point's mirror image, and the shadow ray goes to the mirror and on to the source.
+// Sampled rays that take the same route count nothing (see emitterHit), so each path counts once.
+Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+                                      Context& ctx) const {
+    Spectrum sum(0.f);
+    for (const PlanarMirror& mirror : scene_.planarMirrors()) {
+        double height = glm::dot(mirror.normal, sh.point) - mirror.offset;
+        if (mirror.surface == surface || height <= 0) continue;  // mirrors reflect from their front only
+        dvec3 image = sh.point - 2 * height * mirror.normal;
+        for (const Light& light : scene_.lights()) {
+            const Emitter& e = light.emitter();
+            // Glows, lit only within a radius, are left to rays.
+            if (!e.isDirectSource() || e.kind == Emitter::Kind::Glow ||
+                (light.isDistant() && glm::dot(light.direction(), mirror.normal) <= 0))
+                continue;
+            int count = light.sampleCount(image, subdivision(state), state.weight);
+            uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+            LightView view = light.view(image);
+            for (int k = 0; k < count; ++k) {
+                double u, v;
+                sobol2D(k, scramble, u, v);
+                auto s = light.sample(view, u, v);
+                if (!s || s->radiance.isBlack()) continue;
+                dvec3 d = s->dir - 2 * glm::dot(s->dir, mirror.normal) * mirror.normal;  // toward the image
+                double toMirror = -height / glm::dot(mirror.normal, d);
+                if (!(toMirror > 0) || toMirror >= s->distance) continue;
+                Spectrum f = response(sh, lobes, d, 0);
+                if (f.isBlack()) continue;
+                PathState crossing = state;
+                SurfaceHit onMirror;
+                Spectrum t = transmittance(Ray{sh.point, d, std::numeric_limits<double>::infinity(), surface},
+                                           mirror.surface, false, e.kind, crossing, &onMirror);
+                if (t.isBlack()) continue;
+                t *= shadowTransmittance(Ray{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface},
+                                         light, crossing);
+                if (!t.isBlack()) sum += f * sourceRadiance(light, *s) * mirror.reflectance * t * float(1 / (s->pdf * count));
+            }
         }
     }
     return sum;
@@ -421,10 +501,17 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
 // What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
 // clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
 Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state) const {
+    return transmittance(ray, light.surface(), light.isDistant(), light.emitter().kind, state, nullptr);
+}
+
+// Along a shadow ray to surface `target` (or, for a source at infinity, out of the scene): the
+// transmission of what it crosses, black if blocked. `reached` receives the hit on the target.
+Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
+                                   SurfaceHit* reached) const {
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
-        if (!hit) return light.isDistant() ? t : Spectrum(0.f);
+        if (!hit) return toInfinity ? t : Spectrum(0.f);
         int mat = scene_.materialObject(hit->surface);
         bool cut = (state.clipCount > 0 && clipped(mat, state)) ||
                    crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
@@ -433,13 +520,16 @@ Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState 
             ray.leaving = hit->surface;
             continue;
         }
-        if (hit->surface == light.surface()) return t;
+        if (hit->surface == target) {
+            if (reached) *reached = *hit;
+            return t;
+        }
         const Emitter* e = scene_.emitter(mat);
         bool back = glm::dot(hit->normal, ray.dir) > 0;
         if (e && e->kind != Emitter::Kind::Illum) return Spectrum(0.f);  // another source blocks
         // An illum stands for the light coming through it: it hides other illums and glows behind it.
-        Emitter::Kind target = light.emitter().kind;
-        if (e && !back && (target == Emitter::Kind::Illum || target == Emitter::Kind::Glow)) return Spectrum(0.f);
+        if (e && !back && (targetKind == Emitter::Kind::Illum || targetKind == Emitter::Kind::Glow))
+            return Spectrum(0.f);
         // Otherwise a shadow ray crosses an illum as it would its alternate material.
         const Material* m = e ? (e->alternate >= 0 ? scene_.material(e->alternate) : nullptr) : scene_.material(mat);
         if (m) {
@@ -478,6 +568,7 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, 
         child.kind = PathState::Kind::Sampled;
         child.from = sh.point;
         child.fromWeight = state.weight;
+        child.fromSubdivision = subdivision(state);
         child.sampledDensity = pdf;
         Spectrum emission(0.f);
         Spectrum li = radiance(Ray{sh.point, wi, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,

@@ -73,13 +73,23 @@ private:
     Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
+    Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+                              Context& ctx) const;
+    Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity) const;
+    Spectrum sourceRadiance(const Light& light, const LightSample& s) const;
+    void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
+                         const Spectrum& value) const;
+    bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
     Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state) const;
+    Spectrum transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
+                           SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;
     bool crossesAntimatter(int material, bool backside, PathState& state) const;
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
                float& boost) const;
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
     uint64_t seedFor(uint64_t index) const;
+    double subdivision(const PathState& state) const;
     double primaryTmin(const dvec3& org) const;
 
     const RenderScene& scene_;

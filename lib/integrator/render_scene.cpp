@@ -38,6 +38,7 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
     }
     geometry_ = std::make_unique<SceneGeometry>(std::move(surfaces));
     addSources();
+    addMirrors();
 }
 
 void RenderScene::checkTypes() const {
@@ -72,6 +73,23 @@ void RenderScene::addAntimatter() {
             if (it == scene_.lastDefinition.end())
                 throw Error(o.where, "undefined modifier \"" + name + "\" in antimatter \"" + o.name + "\"");
             cut.push_back(it->second);
+        }
+    }
+}
+
+void RenderScene::addMirrors() {
+    const auto& surfaces = geometry_->surfaces();
+    surfaceMirror_.assign(surfaces.size(), -1);
+    for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
+        const SceneObject& m = scene_.objects[surfaceMaterial_[s]];
+        if (m.type != "mirror") continue;
+        Spectrum rho(float(m.reals[0]), float(m.reals[1]), float(m.reals[2]));
+        if (const auto* poly = std::get_if<Polygon>(&surfaces[s].shape)) {
+            surfaceMirror_[s] = int(mirrors_.size());
+            mirrors_.push_back({s, poly->normal, poly->planeOffset, rho});
+        } else if (const auto* ring = std::get_if<Ring>(&surfaces[s].shape)) {
+            surfaceMirror_[s] = int(mirrors_.size());
+            mirrors_.push_back({s, ring->normal, glm::dot(ring->normal, ring->center), rho});
         }
     }
 }

@@ -11,6 +11,14 @@
 
 namespace brume {
 
+// A flat mirror, through which next-event estimation reaches sources by their mirror images (-dr).
+struct PlanarMirror {
+    int surface;
+    dvec3 normal;  // its front
+    double offset;  // normal · any point of its plane
+    Spectrum reflectance;
+};
+
 class RenderScene {
 public:
     // Throws Error (file:line) for objects of unknown types, types Brume does not have yet, bad arguments.
@@ -31,6 +39,8 @@ public:
     }
     // The light that samples surface s, or -1.
     int lightOfSurface(int surface) const { return surfaceLight_[surface]; }
+    const std::vector<PlanarMirror>& planarMirrors() const { return mirrors_; }
+    bool isPlanarMirror(int surface) const { return surfaceMirror_[surface] >= 0; }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
 
@@ -38,6 +48,7 @@ private:
     void checkTypes() const;
     void addSources();
     void addAntimatter();
+    void addMirrors();
 
     const Scene& scene_;
     std::vector<std::unique_ptr<Material>> materials_;
@@ -47,6 +58,8 @@ private:
     std::vector<Light> lights_;
     std::vector<int> distant_;  // indices into lights_
     std::unordered_map<int, std::vector<int>> antimatter_;
+    std::vector<PlanarMirror> mirrors_;
+    std::vector<int> surfaceMirror_;  // index in mirrors_, or -1
 };
 
 }  // namespace brume

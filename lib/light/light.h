@@ -44,6 +44,7 @@ public:
     double pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3& hitNormal) const;
 
     bool isDistant() const { return surface_ < 0; }
+    const dvec3& direction() const { return direction_; }  // of a distant source
     int surface() const { return surface_; }  // -1 for distant sources
     int object() const { return object_; }
     const Emitter& emitter() const { return *emitter_; }
