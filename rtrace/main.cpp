@@ -24,7 +24,7 @@ struct Options {
     bool irradiance = false, irradianceAtHit = false, header = true, warnings = true, limitDistance = false;
     std::string outputSpec = "v";
     char inFormat = 'a', outFormat = 'a';
-    int threads = 1, xres = 0, yres = 0;
+    int threads = int(std::max(1u, std::thread::hardware_concurrency())), xres = 0, yres = 0;
 };
 
 OptionTable makeTable(Options& o) {
