@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <unistd.h>
@@ -178,4 +179,22 @@ TEST_F(RtraceCli, TraceOutputPrintsRayTreesChildrenFirst) {
     EXPECT_EQ(shadows.out, "\tbulb\t\nfloor\t\n");
     Output header = rtrace("-ovts s.rad", "0 0 1 0 0 -1\n");
     EXPECT_EQ(header.out.find("NCOMP="), std::string::npos);
+}
+
+// Numerically hostile input: huge and tiny coordinates and radiances give finite numbers, never a crash.
+TEST_F(RtraceCli, HostileNumbersGiveFiniteOutput) {
+    writeScene("huge.rad",
+               "void light l 0 0 3 1e30 1e30 1e30\nl sphere s 0 0 4 0 0 1e15 1e10\n"
+               "void plastic p 0 0 5 .5 .5 .5 0 0\n"
+               "p polygon f 0 0 12 -1e20 -1e20 0 1e20 -1e20 0 1e20 1e20 0 -1e20 1e20 0\n"
+               "p polygon tiny 0 0 12 0 0 1e-12 1e-30 0 1e-12 1e-30 1e-30 1e-12 0 1e-30 1e-12\n");
+    const std::string rays = "1e30 0 0 0 0 1\n0 0 1e-300 1e-300 0 1\n1e308 1e308 1e308 -1 -1 -1\n"
+                             "0 0 1 1e-320 0 -1\n0 0 1 0 0 -1\n0 0 0 0 0 1\n";
+    for (const char* opts : {"-h- -ab 2 -ad 8 -aa 0 -ovL", "-h- -I -ab 1 -ad 8 -aa 0 -ov"}) {
+        Output r = rtrace(std::string(opts) + " huge.rad", rays);
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+        EXPECT_EQ(r.out.find("inf"), std::string::npos) << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 6) << r.out;
+    }
 }

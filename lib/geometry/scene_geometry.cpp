@@ -174,6 +174,9 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     rh.ray.tfar = ray.tmax > 3e38 ? std::numeric_limits<float>::infinity() : float(ray.tmax);
     rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    // Embree traces rays only within ±1.8e18 (its FLT_LARGE); farther ones meet nothing.
+    for (float v : {rh.ray.org_x, rh.ray.org_y, rh.ray.org_z, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z, rh.ray.tnear})
+        if (!(std::abs(v) <= 1.8e18f)) return std::nullopt;
     rtcIntersect1(scene_, &ctx.rtc, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     if (rh.hit.geomID == exactGeom_) {

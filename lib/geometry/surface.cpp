@@ -1,5 +1,6 @@
 #include "geometry/surface.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -79,6 +80,26 @@ std::optional<Surface> makeSurface(const Scene& scene, int index) {
         return Surface{index, std::move(*poly)};
     }
     return Surface{index, cone(o)};
+}
+
+bool withinTraceableRange(const Shape& shape) {
+    constexpr double kLimit = 1e18;
+    auto ok = [](const dvec3& p, double r = 0) {
+        return std::abs(p.x) + r <= kLimit && std::abs(p.y) + r <= kLimit && std::abs(p.z) + r <= kLimit;
+    };
+    struct {
+        decltype(ok)& in;
+        bool operator()(const Sphere& s) const { return in(s.center, s.radius); }
+        bool operator()(const Cone& c) const {
+            double r = std::max(c.baseRadius, c.topRadius);
+            return in(c.base, r) && in(c.top, r);
+        }
+        bool operator()(const Ring& r) const { return in(r.center, r.outerRadius); }
+        bool operator()(const Polygon& p) const {
+            return std::all_of(p.vertices.begin(), p.vertices.end(), [&](const dvec3& v) { return in(v); });
+        }
+    } visit{ok};
+    return std::visit(visit, shape);
 }
 
 double area(const Shape& shape) {

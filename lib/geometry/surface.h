@@ -23,6 +23,9 @@ bool isSurfaceType(const std::string& type);
 // with a warning for a degenerate surface (e.g. a polygon of zero area), which Radiance also drops.
 std::optional<Surface> makeSurface(const Scene& scene, int index);
 
+// Whether the shape lies within ±1e18, the coordinates Embree can trace in single precision.
+bool withinTraceableRange(const Shape& shape);
+
 // The surface's area in scene units squared.
 double area(const Shape& shape);
 

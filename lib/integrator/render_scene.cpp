@@ -33,6 +33,10 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
         if (o.modifier < 0) continue;  // a void surface is never seen (Radiance drops it too)
         auto surface = makeSurface(scene, i);
         if (!surface) continue;
+        if (!withinTraceableRange(surface->shape)) {
+            warn(o.where.str() + ": " + o.type + " \"" + o.name + "\" reaches beyond ±1e18, where rays cannot be traced; dropped");
+            continue;
+        }
         surfaces.push_back(std::move(*surface));
         surfaceMaterial_.push_back(o.modifier);
     }
