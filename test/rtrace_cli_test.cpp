@@ -198,3 +198,12 @@ TEST_F(RtraceCli, HostileNumbersGiveFiniteOutput) {
         EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 6) << r.out;
     }
 }
+
+// A scene file named on the command line is opened as given, whatever RAYPATH says (as oconv does).
+TEST_F(RtraceCli, SceneFilesOnTheCommandLineIgnoreRaypath) {
+    setenv("RAYPATH", "/nonexistent", 1);
+    Output r = rtrace("-h- -ov s.rad", "0 0 1 0 0 -1\n");
+    unsetenv("RAYPATH");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(r.out.empty());
+}

@@ -40,7 +40,10 @@ Scene loadScene(const std::vector<std::string>& paths) {
             if (paths.size() != 1) throw Error(SourceLocation{path}, "an octree must be the only scene argument");
             readOctreeFile(scene, path);
         } else {
-            readSceneFile(scene, path);
+            // Files named on the command line are opened as given when they exist, like oconv's;
+            // only names not found there are looked up along RAYPATH.
+            bool here = std::ifstream(path).good();
+            readSceneFile(scene, path, ReadOptions{.searchRayPath = !here});
         }
     }
     return scene;

@@ -1,0 +1,361 @@
+#!/usr/bin/env python3
+"""Brume benchmark: speed and time-versus-error of rtrace on examples/office, against Radiance if present.
+
+Called by bench/run.sh (`make bench`); see bench/README.md. Standard library only: the plot is drawn by
+bench/plot.py in a Python that has matplotlib, or by gnuplot.
+"""
+import argparse
+import hashlib
+import math
+import os
+import random
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+SCENE = os.path.join(ROOT, "examples", "office", "office.rad")
+GRID = os.path.join(ROOT, "examples", "office", "grid.txt")
+RESULTS = os.path.join(HERE, "results")
+REFERENCE = os.path.join(RESULTS, "reference.txt")
+
+# The converged reference: several independent Brume runs, averaged (see make_reference).
+REF_OPTIONS = ["-I", "-h", "-ab", "5", "-aa", "0", "-ad", "8192", "-as", "0", "-ds", ".05", "-lw", "1e-6"]
+REF_RUNS = 4
+# Options shared by every rung of the time-versus-error ladders.
+LADDER_COMMON = ["-I", "-h", "-ab", "5", "-lw", "1e-5"]
+AD_LADDER = [64, 128, 256, 512, 1024, 2048, 4096]
+RADIANCE_CACHE_LADDER = [  # (-aa, -ar, -ad, -as): Radiance's irradiance cache, coarse to fine
+    (".3", "32", "128", "64"),
+    (".2", "64", "256", "128"),
+    (".15", "128", "512", "256"),
+    (".1", "128", "1024", "512"),
+]
+VIEWPOINT = (4.5, 3.2, 1.2)  # a seated eye in the office's north-east quarter
+
+
+def lux(rgb):
+    return 179.0 * (0.265 * rgb[0] + 0.670 * rgb[1] + 0.065 * rgb[2])
+
+
+def sha256(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def read_rgb(text):
+    rows = []
+    for line in text.splitlines():
+        v = line.split()
+        if len(v) >= 3:
+            rows.append(tuple(float(x) for x in v[:3]))
+    return rows
+
+
+def run(cmd, stdin_path, env=None, capture=True):
+    """Runs cmd with stdin from a file; returns (stdout text or None, wall s, cpu s of the child)."""
+    with open(stdin_path, "rb") as fin:
+        t0 = time.perf_counter()
+        p = subprocess.Popen(cmd, stdin=fin, stdout=subprocess.PIPE if capture else subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, env=env)
+        out, err = p.communicate()
+        wall = time.perf_counter() - t0
+    if p.returncode != 0:
+        sys.exit("bench: command failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), err.decode(errors="replace")))
+    return (out.decode() if capture else None), wall
+
+
+class Timer:
+    """Wall and CPU time (user + system of children) of one run."""
+
+    def __init__(self, cmd, stdin_path, env=None, capture=True):
+        before = os.times()
+        self.out, self.wall = run(cmd, stdin_path, env, capture)
+        after = os.times()
+        self.cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
+
+
+def best_of(n, cmd, stdin_path, env=None):
+    """The fastest of n runs (least disturbed by other load): (wall, cpu)."""
+    runs = [Timer(cmd, stdin_path, env, capture=False) for _ in range(n)]
+    best = min(runs, key=lambda r: r.wall)
+    return best.wall, best.cpu
+
+
+def find_radiance():
+    cand = os.environ.get("RADIANCE_BIN") or "/tmp/radiance/bin"
+    rt, oc = os.path.join(cand, "rtrace"), os.path.join(cand, "oconv")
+    if not (os.access(rt, os.X_OK) and os.access(oc, os.X_OK)):
+        return None
+    env = dict(os.environ)
+    lib = os.environ.get("RADIANCE_LIB") or os.path.join(os.path.dirname(cand), "lib")
+    if os.path.isdir(lib):
+        env["RAYPATH"] = ".:" + lib
+    return {"rtrace": rt, "oconv": oc, "env": env, "dir": cand}
+
+
+def git_commit():
+    """HEAD's short hash, with -dirty if the sources have uncommitted changes (a guess at what was built)."""
+    try:
+        head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
+                              text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "-uno", "--", "lib", "rtrace"],
+                               capture_output=True, text=True).stdout.strip()
+        return (head + ("-dirty" if dirty else "")) or "unknown"
+    except OSError:
+        return "unknown"
+
+
+# ---------------------------------------------------------------- reference
+
+def load_reference():
+    """The cached reference, if it was made from the current scene and grid: list of lux, list of rel. SE."""
+    if not os.path.exists(REFERENCE):
+        return None
+    meta, lx, se = {}, [], []
+    with open(REFERENCE) as f:
+        for line in f:
+            if line.startswith("#"):
+                if ":" in line:
+                    k, v = line[1:].split(":", 1)
+                    meta[k.strip()] = v.strip()
+                continue
+            v = line.split()
+            if len(v) >= 8:
+                lx.append(float(v[6]))
+                se.append(float(v[7]) / 100)
+    if meta.get("scene sha256") != sha256(SCENE) or meta.get("grid sha256") != sha256(GRID):
+        print("bench: %s was made for another scene or grid: remaking it" % os.path.relpath(REFERENCE, ROOT))
+        return None
+    return lx, se, meta
+
+
+def make_reference(rtrace, threads):
+    cmd = [rtrace] + REF_OPTIONS + ["-n", str(threads), SCENE]
+    print("bench: making the reference (%d runs of: %s < grid.txt); this is done once and cached in %s"
+          % (REF_RUNS, " ".join(["rtrace"] + cmd[1:-1] + ["office.rad"]), os.path.relpath(REFERENCE, ROOT)))
+    runs, total, commit = [], 0.0, git_commit()
+    for k in range(REF_RUNS):
+        t = Timer(cmd, GRID)
+        total += t.wall
+        runs.append(read_rgb(t.out))
+        print("  run %d/%d: %.0f s" % (k + 1, REF_RUNS, t.wall), flush=True)
+    pts = [l.split() for l in open(GRID) if l.split()]
+    n = len(pts)
+    os.makedirs(RESULTS, exist_ok=True)
+    lx, se = [], []
+    with open(REFERENCE, "w") as f:
+        f.write("# Brume bench reference: converged irradiance at the sensors of examples/office/grid.txt\n")
+        f.write("# made by bench/bench.py (make bench, or --remake-reference): the mean of independent runs of\n")
+        f.write("# command: rtrace %s -n %d examples/office/office.rad < examples/office/grid.txt\n"
+                % (" ".join(REF_OPTIONS), threads))
+        f.write("# runs: %d\n" % REF_RUNS)
+        f.write("# wall time: %.0f s\n" % total)
+        f.write("# brume commit: %s (the source tree's HEAD when the reference was made)\n" % commit)
+        f.write("# rtrace binary: %s, built %s\n"
+                % (rtrace, time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(os.path.getmtime(rtrace)))))
+        f.write("# date: %s\n" % time.strftime("%Y-%m-%d %H:%M:%S"))
+        f.write("# scene sha256: %s\n" % sha256(SCENE))
+        f.write("# grid sha256: %s\n" % sha256(GRID))
+        f.write("# columns: x y z R G B (mean irradiance, W/m2), illuminance (lux), "
+                "standard error of the mean illuminance (%)\n")
+        for i in range(n):
+            rgb = [statistics.fmean(r[i][c] for r in runs) for c in range(3)]
+            vals = [lux(r[i]) for r in runs]
+            m = statistics.fmean(vals)
+            s = statistics.stdev(vals) / math.sqrt(len(vals)) / m if m > 0 else 0.0
+            lx.append(m)
+            se.append(s)
+            f.write("%s %s %s %.6e %.6e %.6e %.3f %.3f\n" % (pts[i][0], pts[i][1], pts[i][2], *rgb, m, 100 * s))
+    return lx, se, {"runs": str(REF_RUNS), "command": "rtrace " + " ".join(REF_OPTIONS)}
+
+
+# ---------------------------------------------------------------- measurements
+
+def errors(values, ref):
+    rel = [(lux(v) - r) / r for v, r in zip(values, ref)]
+    if len(rel) != len(ref):
+        sys.exit("bench: expected %d values, got %d" % (len(ref), len(rel)))
+    rms = math.sqrt(sum(e * e for e in rel) / len(rel))
+    return 100 * rms, 100 * max(abs(e) for e in rel), statistics.fmean(lux(v) for v in values)
+
+
+def view_rays(path, n, seed=1):
+    """n rays from VIEWPOINT, directions uniform over the sphere (fixed seed: the same rays every run)."""
+    rng = random.Random(seed)
+    with open(path, "w") as f:
+        for _ in range(n):
+            z = 2 * rng.random() - 1
+            phi = 2 * math.pi * rng.random()
+            s = math.sqrt(max(0.0, 1 - z * z))
+            f.write("%g %g %g %.7f %.7f %.7f\n" % (*VIEWPOINT, s * math.cos(phi), s * math.sin(phi), z))
+
+
+def fmt_rate(n, t):
+    r = n / t
+    return "%.0fk/s" % (r / 1e3) if r >= 1e4 else "%.0f/s" % r
+
+
+def throughput(brume, rad, tmp, repeat, threads):
+    views = os.path.join(tmp, "view100k.txt")
+    view_rays(views, 100000)
+    views10 = os.path.join(tmp, "view10k.txt")
+    view_rays(views10, 10000, seed=2)
+    ngrid = sum(1 for l in open(GRID) if l.split())
+    tests = [
+        ("view rays, -ab 0", views, 100000, ["-h", "-ab", "0"]),
+        ("view rays, -ab 1 -aa 0 -ad 64 -as 32", views10, 10000, ["-h", "-ab", "1", "-aa", "0", "-ad", "64", "-as", "32"]),
+        ("sensor grid -I -ab 5 -aa 0 -ad 512 -as 256", GRID, ngrid,
+         ["-h", "-I", "-ab", "5", "-aa", "0", "-ad", "512", "-as", "256", "-lw", "1e-5"]),
+    ]
+    print("\n== Rays per second: the same rays, the same options (best of %d runs; wall time, CPU time in "
+          "brackets) ==" % repeat)
+    hdr = "%-44s %7s  %-22s %-22s %-22s %9s %8s" % ("test", "rays", "Brume -n 1", "Radiance -n 1",
+                                                     "Brume -n %d" % threads, "Brume/Rad", "-n %d/-n 1" % threads)
+    print(hdr)
+    print("-" * len(hdr))
+    rows = []
+    for name, inp, n, opts in tests:
+        b1 = best_of(repeat, [brume] + opts + ["-n", "1", SCENE], inp)
+        bn = best_of(repeat, [brume] + opts + ["-n", str(threads), SCENE], inp)
+        r1 = best_of(repeat, [rad["rtrace"]] + opts + ["-n", "1", rad["oct"]], inp, rad["env"]) if rad else None
+        cell = lambda t: "%6.2f s (%5.2f) %7s" % (t[0], t[1], fmt_rate(n, t[0]))
+        ratio = "%8.2fx" % (r1[0] / b1[0]) if r1 else "%9s" % "-"
+        print("%-44s %7d  %-22s %-22s %-22s %s %7.2fx" % (name, n, cell(b1), cell(r1) if r1 else "skipped",
+                                                           cell(bn), ratio, b1[0] / bn[0]))
+        rows.append((name, n, b1, r1, bn))
+    print("Brume/Rad: how many times faster Brume -n 1 is than Radiance -n 1 (wall time) on the same rays.")
+    print("-n %d/-n 1: Brume's speed-up; if its CPU time is not about %d times its wall time, other processes "
+          "held the other cores." % (threads, threads))
+    if not rad:
+        print("Radiance not found, skipped (set RADIANCE_BIN to the directory holding its rtrace and oconv).")
+    return rows
+
+
+def ladders(brume, rad, ref):
+    series = []  # (label, [(settings, wall, cpu, rms, max, mean)])
+
+    def rung(cmd, env=None):
+        t = Timer(cmd, GRID, env)
+        rms, mx, mean = errors(read_rgb(t.out), ref)
+        return t.wall, t.cpu, rms, mx, mean
+
+    print("\n== Time against error: -ab 5 on the office grid (%d sensors) versus the reference, one thread ==" %
+          len(ref))
+    hdr = "%-12s %-40s %8s %8s %7s %7s %7s" % ("program", "settings", "wall s", "cpu s", "RMS %", "max %", "mean lx")
+    print(hdr)
+    print("-" * len(hdr))
+
+    def report(prog, label, rows):
+        series.append((label, rows))
+        for s, w, c, rms, mx, mean in rows:
+            print("%-12s %-40s %8.2f %8.2f %7.2f %7.2f %7.1f" % (prog, s, w, c, rms, mx, mean), flush=True)
+
+    # -ds .05 costs about six times -ds .2 per path: its ladder stops at -ad 1024.
+    for label, extra, ads in (("Brume path tracing (-ds .2)", [], AD_LADDER),
+                              ("Brume path tracing -ds .05", ["-ds", ".05"], AD_LADDER[:5])):
+        rows = []
+        for ad in ads:
+            o = ["-aa", "0", "-ad", str(ad)] + extra
+            rows.append((" ".join(o),) + rung([brume] + LADDER_COMMON + o + ["-n", "1", SCENE]))
+        report("Brume", label, rows)
+    if rad:
+        rows = []
+        for ad in AD_LADDER:
+            o = ["-aa", "0", "-ad", str(ad), "-as", str(ad // 2)]
+            rows.append((" ".join(o),) + rung([rad["rtrace"]] + LADDER_COMMON + o + ["-n", "1", rad["oct"]], rad["env"]))
+        report("Radiance", "Radiance path tracing (-aa 0)", rows)
+        rows = []
+        for aa, ar, ad, as_ in RADIANCE_CACHE_LADDER:
+            o = ["-aa", aa, "-ar", ar, "-ad", ad, "-as", as_]
+            rows.append((" ".join(o),) + rung([rad["rtrace"]] + LADDER_COMMON + o + ["-n", "1", rad["oct"]], rad["env"]))
+        report("Radiance", "Radiance irradiance cache", rows)
+    else:
+        print("Radiance not found, skipped")
+    print("common options: %s; RMS and max: relative error of each sensor's illuminance." % " ".join(LADDER_COMMON))
+    return series
+
+
+def write_series(series, path):
+    with open(path, "w") as f:
+        f.write("# series\tsettings\twall_s\tcpu_s\trms_pct\tmax_pct\tmean_lux\n")
+        for label, rows in series:
+            for s, w, c, rms, mx, mean in rows:
+                f.write("%s\t%s\t%.4f\t%.4f\t%.4f\t%.4f\t%.2f\n" % (label, s, w, c, rms, mx, mean))
+
+
+def plot(tsv, png, ref_noise):
+    """bench/plot.py with a Python that has matplotlib, else gnuplot, else nothing."""
+    for py in [sys.executable, "python3", "/usr/bin/python3"]:
+        exe = shutil.which(py) if not os.path.isabs(py) else py
+        if not exe:
+            continue
+        ok = subprocess.run([exe, "-c", "import matplotlib"], capture_output=True).returncode == 0
+        if ok:
+            r = subprocess.run([exe, os.path.join(HERE, "plot.py"), tsv, png, "%.4f" % ref_noise])
+            if r.returncode == 0:
+                return "matplotlib"
+    if shutil.which("gnuplot"):
+        r = subprocess.run(["bash", os.path.join(HERE, "plot.gnuplot.sh"), tsv, png])
+        if r.returncode == 0:
+            return "gnuplot"
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"), help="directory holding Brume's rtrace")
+    ap.add_argument("--repeat", type=int, default=3, help="runs per throughput measurement (the best is kept)")
+    ap.add_argument("--threads", type=int, default=2, help="the multi-threaded Brume column's -n")
+    ap.add_argument("--remake-reference", action="store_true", help="recompute bench/results/reference.txt")
+    ap.add_argument("--skip-throughput", action="store_true")
+    ap.add_argument("--skip-ladders", action="store_true")
+    a = ap.parse_args()
+
+    start = time.perf_counter()
+    brume = os.path.abspath(os.path.join(a.bin, "rtrace"))
+    if not os.access(brume, os.X_OK):
+        sys.exit("bench: no Brume rtrace at %s (run make first)" % brume)
+    print("Brume:    %s (commit %s)" % (brume, git_commit()))
+    print("machine:  %d CPUs, load average %.2f at start (other load disturbs the timings)"
+          % (os.cpu_count(), os.getloadavg()[0]))
+    rad = find_radiance()
+    with tempfile.TemporaryDirectory(prefix="brume-bench-") as tmp:
+        if rad:
+            rad["oct"] = os.path.join(tmp, "office.oct")
+            with open(rad["oct"], "wb") as f:
+                # frozen (-f), so that the octree does not depend on the working directory
+                subprocess.run([rad["oconv"], "-f", SCENE], stdout=f, env=rad["env"], check=True)
+            print("Radiance: %s (octree made with its oconv -f in %s)" % (rad["dir"], tmp))
+        else:
+            print("Radiance not found, skipped (looked in $RADIANCE_BIN, then /tmp/radiance/bin)")
+        if not a.skip_throughput:
+            throughput(brume, rad, tmp, a.repeat, a.threads)
+        if not a.skip_ladders:
+            refd = None if a.remake_reference else load_reference()
+            if refd is None:
+                refd = make_reference(brume, os.cpu_count() or 1)
+            ref, se, meta = refd
+            ref_noise = 100 * math.sqrt(sum(s * s for s in se) / len(se))
+            print("\nreference: %s, the mean of %s runs of %s;\n           its own standard error: RMS %.2f %%, "
+                  "max %.2f %%; mean illuminance %.1f lx" % (os.path.relpath(REFERENCE, ROOT), meta.get("runs", "?"),
+                                                             meta.get("command", "?").split(" -n ")[0], ref_noise,
+                                                             100 * max(se), statistics.fmean(ref)))
+            series = ladders(brume, rad, ref)
+            os.makedirs(RESULTS, exist_ok=True)
+            tsv = os.path.join(RESULTS, "time_vs_error.tsv")
+            png = os.path.join(RESULTS, "time_vs_error.png")
+            write_series(series, tsv)
+            how = plot(tsv, png, ref_noise)
+            print("\ntable: %s" % os.path.relpath(tsv, ROOT))
+            print("plot:  %s" % (os.path.relpath(png, ROOT) + " (" + how + ")" if how else
+                                 "not drawn (neither matplotlib nor gnuplot found)"))
+    print("\nbench total: %.0f s" % (time.perf_counter() - start))
+
+
+if __name__ == "__main__":
+    main()
