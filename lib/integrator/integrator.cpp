@@ -27,7 +27,6 @@ struct Integrator::PathState {
     dvec3 from{0};
     double sampledDensity = 0;
     double fromWeight = 1;
-    double fromSubdivision = 0;  // the -ds ratio next-event estimation used there
     int depth = 0;
     // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
     // next-event estimation through their mirror images.
@@ -70,12 +69,6 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
 // hits closer than 1e-6, ignore those, but relative to the scene's and the point's size.
 double Integrator::primaryTmin(const dvec3& org) const {
     return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
-}
-
-// Shadow rays per source: twice as many per axis where a primary ray lands (or at a sensor), whose value
-// is the answer itself, than deeper in a path, where many paths average.
-double Integrator::subdivision(const PathState& state) const {
-    return settings_.sourceSubdivision * (state.depth == 0 ? 0.5 : 1.0);
 }
 
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
@@ -235,7 +228,7 @@ double Integrator::misWeightForLight(const Light& light, const PathState& state,
     double dist = hit ? glm::length(hit->point - state.from) : std::numeric_limits<double>::infinity();
     dvec3 normal = hit ? hit->normal : dvec3(0);
     double lightDensity = light.pdf(state.from, ray.dir, dist, normal) *
-                          light.sampleCount(state.from, state.fromSubdivision, state.fromWeight);
+                          light.sampleCount(state.from, settings_.sourceSubdivision, state.fromWeight);
     return powerHeuristic(state.sampledDensity, lightDensity);
 }
 
@@ -384,7 +377,13 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
     for (const Light& light : scene_.lights()) {
         const Emitter& e = light.emitter();
         if (!e.isDirectSource() || (surface >= 0 && light.surface() == surface)) continue;
-        int count = light.sampleCount(sh.point, subdivision(state), state.weight);
+        // Diffuse light of a uniform source: its unoccluded value in closed form, less what the shadow rays
+        // find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
+        double closedForm = -1;
+        if (!lobes.diffuse.isBlack() && !lobes.fresnelDiffuse) closedForm = light.unoccludedIrradiance(sh.point, sh.normal);
+        Spectrum blocked(0.f);  // estimate of the irradiance the closed form counts but obstacles stop
+        bool anyThrough = false;  // some controlled shadow ray got through
+        int count = light.sampleCount(sh.point, settings_.sourceSubdivision, state.weight);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         LightView view = light.view(sh.point);
         for (int k = 0; k < count; ++k) {
@@ -394,13 +393,27 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
             if (!s || s->radiance.isBlack()) continue;
             if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
             double lightDensity = s->pdf * count;
-            Spectrum f = response(sh, lobes, s->dir, lightDensity);
-            if (f.isBlack()) continue;
+            double cosL = glm::dot(sh.normal, s->dir);
+            bool controlled = closedForm >= 0 && cosL > 0;
+            Spectrum f = response(sh, lobes, s->dir, lightDensity, !controlled);
+            if (f.isBlack() && !controlled) continue;
             Spectrum le = sourceRadiance(light, *s);
             Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
                                              light, state);
             if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
-            if (!t.isBlack()) sum += f * le * t * float(1 / lightDensity);
+            sum += f * t * le * float(1 / lightDensity);
+            if (controlled) {
+                blocked += (Spectrum(1.f) - t) * float(cosL / lightDensity);
+                anyThrough = anyThrough || !t.isBlack();
+            }
+        }
+        if (closedForm >= 0 && anyThrough) {
+            // Every ray blocked means shadow: 0, not the closed form less a noisy estimate of itself (for the
+            // sun, that noise alone would be a visible glow in every shadow). In penumbrae the estimate of
+            // what is blocked can still exceed the whole: never below 0.
+            Spectrum unblocked = Spectrum(float(closedForm)) - blocked;
+            for (int c = 0; c < unblocked.size(); ++c) unblocked[c] = std::max(0.f, unblocked[c]);
+            sum += lobes.diffuse * e.radiance * unblocked * float(1 / kPi);
         }
     }
     if (mirrorImagesOn()) sum += directViaMirrors(sh, lobes, surface, state, ctx);
@@ -410,7 +423,8 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
 // The lobes' response f·|cos| to light from direction l. A glossy lobe that is also sampled by rays takes
 // its share against the source's sampling density (power heuristic); lightDensity 0 gives every lobe
 // all of it (sources no ray will count).
-Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity) const {
+Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
+                              bool withDiffuse) const {
     dvec3 wo = -sh.dir;
     double cosL = glm::dot(sh.normal, l);
     Spectrum f(0.f);
@@ -420,7 +434,7 @@ Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3
     };
     if (cosL > 0) {
         double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(cosL) : 1.0;
-        if (!lobes.diffuse.isBlack()) add(lobes.diffuse, fresnel / kPi, false, 0);
+        if (withDiffuse && !lobes.diffuse.isBlack()) add(lobes.diffuse, fresnel / kPi, false, 0);
         if (!lobes.glossy.isBlack())
             add(lobes.glossy, wardBrdf(wo, l, sh.normal, lobes.alpha2), lobes.sampleGlossy,
                 wardPdf(wo, l, sh.normal, lobes.alpha2));
@@ -471,7 +485,7 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int
             if (!e.isDirectSource() || e.kind == Emitter::Kind::Glow ||
                 (light.isDistant() && glm::dot(light.direction(), mirror.normal) <= 0))
                 continue;
-            int count = light.sampleCount(image, subdivision(state), state.weight);
+            int count = light.sampleCount(image, settings_.sourceSubdivision, state.weight);
             uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
             LightView view = light.view(image);
             for (int k = 0; k < count; ++k) {
@@ -568,7 +582,6 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, 
         child.kind = PathState::Kind::Sampled;
         child.from = sh.point;
         child.fromWeight = state.weight;
-        child.fromSubdivision = subdivision(state);
         child.sampledDensity = pdf;
         Spectrum emission(0.f);
         Spectrum li = radiance(Ray{sh.point, wi, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,

@@ -75,7 +75,8 @@ private:
     Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
     Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
                               Context& ctx) const;
-    Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity) const;
+    Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
+                      bool withDiffuse = true) const;
     Spectrum sourceRadiance(const Light& light, const LightSample& s) const;
     void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
                          const Spectrum& value) const;
@@ -89,7 +90,6 @@ private:
                float& boost) const;
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
     uint64_t seedFor(uint64_t index) const;
-    double subdivision(const PathState& state) const;
     double primaryTmin(const dvec3& org) const;
 
     const RenderScene& scene_;

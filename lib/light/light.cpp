@@ -54,9 +54,11 @@ bool Light::distantContains(const dvec3& d) const { return 1 - glm::dot(d, direc
 int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
     if (ratio <= 0) return 1;
     double angularSize = isDistant() ? 2 * std::sqrt(2 * oneMinusCos_) : size_ / std::max(glm::length(center_ - p), 1e-300);
-    // Two stratified samples per axis where Radiance puts one partition: random positions need them to be
-    // as smooth as Radiance's fixed partition centres, without their bias.
-    int n = static_cast<int>(std::ceil(std::min(16.0, 2 * angularSize * weight / ratio)));
+    // One stratified sample per axis where Radiance makes one partition for sources whose unoccluded diffuse
+    // light has a closed form (shadow rays then only find what is blocked, see Integrator::direct); two for
+    // the others, whose random positions need them to be as smooth as Radiance's fixed cell centres.
+    double perCell = hasClosedForm() ? 1 : 2;
+    int n = static_cast<int>(std::ceil(std::min(8 * perCell, perCell * angularSize * weight / ratio)));
     return std::max(1, n * n);
 }
 
@@ -152,6 +154,63 @@ std::optional<LightSample> Light::sample(const LightView& view, double u, double
     double h2 = std::max(0.0, sphere->radius * sphere->radius - (dc * dc - b * b));
     double dist = b - std::sqrt(h2);
     return LightSample{dir, dist, 1 / (2 * kPi * omc), emitter_->emitted(-dir)};
+}
+
+namespace {
+
+// Lambert (1760): a uniform polygon of unit radiance gives a point of normal n the irradiance
+// ½ Σ γᵢ n·(rᵢ × rᵢ₊₁)/|rᵢ × rᵢ₊₁|, γᵢ the angle its edge i subtends; the polygon is first clipped to the
+// point's upper half-space.
+double lambertPolygon(const std::vector<dvec3>& vertices, const dvec3& p, const dvec3& n) {
+    std::vector<dvec3> clipped;
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        dvec3 a = vertices[i] - p, b = vertices[(i + 1) % vertices.size()] - p;
+        double ha = glm::dot(a, n), hb = glm::dot(b, n);
+        if (ha >= 0) clipped.push_back(a);
+        if ((ha >= 0) != (hb >= 0)) clipped.push_back(a + (b - a) * (ha / (ha - hb)));
+    }
+    double sum = 0;
+    for (size_t i = 0; i < clipped.size(); ++i) {
+        dvec3 a = glm::normalize(clipped[i]), b = glm::normalize(clipped[(i + 1) % clipped.size()]);
+        dvec3 c = glm::cross(a, b);
+        double len = glm::length(c);
+        if (len > 0) sum += std::atan2(len, glm::dot(a, b)) * glm::dot(n, c) / len;
+    }
+    return 0.5 * std::abs(sum);
+}
+
+// A disc of angular radius α (1 − cos α given) whose centre is at angle β from the normal, wholly above
+// the horizon: π sin²α cos β.
+double capIrradiance(double oneMinusCosAlpha, double cosBeta) {
+    double sin2 = oneMinusCosAlpha * (2 - oneMinusCosAlpha);
+    double sinBeta = std::sqrt(std::max(0.0, 1 - cosBeta * cosBeta));
+    double cosAlpha = 1 - oneMinusCosAlpha;
+    // Above the horizon: α + β ≤ 90°, i.e. cos(α + β) ≥ 0.
+    if (cosAlpha * cosBeta - std::sqrt(sin2) * sinBeta < 0) return -1;
+    return kPi * sin2 * cosBeta;
+}
+
+}  // namespace
+
+bool Light::hasClosedForm() const {
+    bool uniform = emitter_->kind == Emitter::Kind::Light || emitter_->kind == Emitter::Kind::Illum;
+    return uniform && (isDistant() || std::holds_alternative<Polygon>(*shape_) || std::holds_alternative<Sphere>(*shape_));
+}
+
+double Light::unoccludedIrradiance(const dvec3& p, const dvec3& n) const {
+    if (!hasClosedForm()) return -1;
+    if (isDistant()) return capIrradiance(oneMinusCos_, glm::dot(n, direction_));
+    if (const auto* poly = std::get_if<Polygon>(shape_)) {
+        if (glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return 0;  // behind its front
+        return lambertPolygon(poly->vertices, p, n);
+    }
+    if (const auto* sphere = std::get_if<Sphere>(shape_)) {
+        dvec3 toCenter = sphere->center - p;
+        double d = glm::length(toCenter);
+        if (d <= sphere->radius) return -1;
+        return capIrradiance(sphereOneMinusCos(sphere->radius, d), glm::dot(n, toCenter / d));
+    }
+    return -1;
 }
 
 double Light::pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3& hitNormal) const {

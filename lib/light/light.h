@@ -43,6 +43,12 @@ public:
     // source's normal there) from p.
     double pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3& hitNormal) const;
 
+    // The irradiance per unit radiance the whole source would give a surface at p facing n, if nothing were
+    // in the way, in closed form (Lambert's polygon formula; πsin²α·cosβ for spheres and distant discs wholly
+    // above the surface's horizon); negative where no closed form is used.
+    double unoccludedIrradiance(const dvec3& p, const dvec3& n) const;
+    // Uniform sources shaped as polygons, spheres or distant discs: unoccludedIrradiance may answer.
+    bool hasClosedForm() const;
     bool isDistant() const { return surface_ < 0; }
     const dvec3& direction() const { return direction_; }  // of a distant source
     int surface() const { return surface_; }  // -1 for distant sources

@@ -22,10 +22,10 @@ public:
     Spectrum() : Spectrum(0.f) {}
     explicit Spectrum(float v, int n = sChannels) : n_(n) { std::fill_n(v_, n_, v); }
     Spectrum(float r, float g, float b) : n_(3) { v_[0] = r, v_[1] = g, v_[2] = b; }
-    Spectrum(const Spectrum& o) : n_(o.n_) { std::copy_n(o.v_, n_, v_); }
+    Spectrum(const Spectrum& o) : n_(o.n_) { copyFrom(o); }
     Spectrum& operator=(const Spectrum& o) {
         n_ = o.n_;
-        std::copy_n(o.v_, n_, v_);
+        copyFrom(o);
         return *this;
     }
 
@@ -65,6 +65,11 @@ public:
     }
 
 private:
+    // RGB inline: a library call per copy would cost more than the copy.
+    void copyFrom(const Spectrum& o) {
+        if (n_ == 3) v_[0] = o.v_[0], v_[1] = o.v_[1], v_[2] = o.v_[2];
+        else std::copy_n(o.v_, n_, v_);
+    }
     template <class F>
     Spectrum& apply(const Spectrum& o, F f) {
         assert(o.n_ == n_);
