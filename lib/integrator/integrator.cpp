@@ -27,6 +27,7 @@ struct Integrator::PathState {
     dvec3 from{0};
     double sampledDensity = 0;
     double fromWeight = 1;
+    double fromSubdivision = 0;  // the -ds ratio next-event estimation used there
     int depth = 0;
     // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
     // next-event estimation through their mirror images.
@@ -69,6 +70,12 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
 // hits closer than 1e-6, ignore those, but relative to the scene's and the point's size.
 double Integrator::primaryTmin(const dvec3& org) const {
     return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
+}
+
+// Shadow rays per source: twice as many per axis where a primary ray lands (or at a sensor), whose value
+// is the answer itself and whose penumbrae nothing averages, as deeper in a path, where many paths do.
+double Integrator::subdivision(const PathState& state) const {
+    return settings_.sourceSubdivision * (state.depth == 0 ? 0.5 : 1.0);
 }
 
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
@@ -228,7 +235,7 @@ double Integrator::misWeightForLight(const Light& light, const PathState& state,
     double dist = hit ? glm::length(hit->point - state.from) : std::numeric_limits<double>::infinity();
     dvec3 normal = hit ? hit->normal : dvec3(0);
     double lightDensity = light.pdf(state.from, ray.dir, dist, normal) *
-                          light.sampleCount(state.from, settings_.sourceSubdivision, state.fromWeight);
+                          light.sampleCount(state.from, state.fromSubdivision, state.fromWeight);
     return powerHeuristic(state.sampledDensity, lightDensity);
 }
 
@@ -383,7 +390,7 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
         if (!lobes.diffuse.isBlack() && !lobes.fresnelDiffuse) closedForm = light.unoccludedIrradiance(sh.point, sh.normal);
         Spectrum blocked(0.f);  // estimate of the irradiance the closed form counts but obstacles stop
         bool anyThrough = false;  // some controlled shadow ray got through
-        int count = light.sampleCount(sh.point, settings_.sourceSubdivision, state.weight);
+        int count = light.sampleCount(sh.point, subdivision(state), state.weight);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         LightView view = light.view(sh.point);
         for (int k = 0; k < count; ++k) {
@@ -485,7 +492,7 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int
             if (!e.isDirectSource() || e.kind == Emitter::Kind::Glow ||
                 (light.isDistant() && glm::dot(light.direction(), mirror.normal) <= 0))
                 continue;
-            int count = light.sampleCount(image, settings_.sourceSubdivision, state.weight);
+            int count = light.sampleCount(image, subdivision(state), state.weight);
             uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
             LightView view = light.view(image);
             for (int k = 0; k < count; ++k) {
@@ -582,6 +589,7 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, 
         child.kind = PathState::Kind::Sampled;
         child.from = sh.point;
         child.fromWeight = state.weight;
+        child.fromSubdivision = subdivision(state);
         child.sampledDensity = pdf;
         Spectrum emission(0.f);
         Spectrum li = radiance(Ray{sh.point, wi, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,
