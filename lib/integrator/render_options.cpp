@@ -45,7 +45,7 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addReal(t, "-dc", s.directCertainty, "direct certainty");
     addReal(t, "-dj", s.sourceJitter, "direct jitter (sources are always sampled stratified)");
     addReal(t, "-ds", s.sourceSubdivision, "direct sampling: source size/distance ratio per shadow ray");
-    addInt(t, "-dr", s.directRelays, "direct relays (virtual sources: not yet)");
+    addInt(t, "-dr", s.directRelays, "direct relays: sources seen in flat mirrors (one relay)");
     addInt(t, "-dp", s.directPresamples, "direct pretest density");
     t.addBool("-dv", s.directVisible, "light sources visible");
     addReal(t, "-ss", s.specularJitter, "specular sampling");

@@ -76,6 +76,8 @@ void ValueWriter::reals(const double* v, int n) {
     }
 }
 
+void ValueWriter::real(double v) { reals(&v, 1); }
+
 void ValueWriter::color(const Spectrum& c) {
     if (format_ == 'c') {
         unsigned char rgbe[4];
@@ -116,26 +118,12 @@ void ValueWriter::fields(const std::string& spec, const OutputRay& ray) {
             case 'v':
             case 'V': color(r.value); break;
             case 'W': color(Spectrum(1.f)); break;
-            case 'w': {
-                double one = 1;
-                reals(&one, 1);
-                break;
-            }
-            case 'l': {
-                double l = length(r.effectiveLength);
-                reals(&l, 1);
-                break;
-            }
-            case 'L': {
-                double l = length(r.firstLength);
-                reals(&l, 1);
-                break;
-            }
-            case 'c': {
-                double uv[2] = {0, 0};
-                reals(uv, 2);
-                break;
-            }
+            case 'w': real(1); break;
+            case 'l': real(length(r.effectiveLength)); break;
+            case 'L':
+            case 'X': real(length(r.firstLength)); break;
+            case 'R': real(length(r.mirroredLength)); break;
+            case 'c': real(0), real(0); break;  // surface (u, v): none without meshes
             case 'p': reals(local ? &r.point.x : &ray.org.x, 3); break;
             case 'n':
             case 'N': {
@@ -148,16 +136,6 @@ void ValueWriter::fields(const std::string& spec, const OutputRay& ray) {
             case 'M': text(hit ? objectName(r.modifierObject) : "*"); break;
             case 'r': color(r.mirrored); break;
             case 'x': color(r.value - r.mirrored); break;
-            case 'R': {
-                double l = length(r.mirroredLength);
-                reals(&l, 1);
-                break;
-            }
-            case 'X': {
-                double l = length(r.firstLength);
-                reals(&l, 1);
-                break;
-            }
             case '~': text("~"); break;
         }
     }

@@ -33,6 +33,7 @@ public:
 private:
     void fields(const std::string& spec, const OutputRay& ray);
     void reals(const double* v, int n);
+    void real(double v);
     void color(const Spectrum& c);
     void text(const std::string& s);
     std::string objectName(int object) const;
