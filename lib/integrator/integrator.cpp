@@ -72,11 +72,18 @@ double Integrator::primaryTmin(const dvec3& org) const {
     return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
 }
 
-// Shadow rays per source: twice as many per axis where a primary ray lands (or at a sensor), whose value
-// is the answer itself and whose penumbrae nothing averages, as deeper in a path, where many paths do.
+// Where a primary ray lands (or at a sensor), the value is the answer itself and nothing averages its
+// noise: twice the shadow rays per axis, and diffuse light in closed form. Deeper in a path many paths
+// average, and cheaper estimates win.
+// With -ab, the shadow rays there grow with √-ad, so that penumbrae get as smooth as the interreflected
+// light the -ad paths estimate.
 double Integrator::subdivision(const PathState& state) const {
-    return settings_.sourceSubdivision * (state.depth == 0 ? 0.5 : 1.0);
+    if (state.depth > 0) return settings_.sourceSubdivision;
+    double paths = settings_.ambientBounces > 0 ? std::max(settings_.ambientDivisions, 0) : 0;
+    return settings_.sourceSubdivision / std::max(2.0, std::sqrt(paths) / 8);
 }
+
+bool Integrator::exactDirect(const PathState& state) const { return state.depth == 0; }
 
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
 
@@ -387,7 +394,8 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
         // Diffuse light of a uniform source: its unoccluded value in closed form, less what the shadow rays
         // find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
         double closedForm = -1;
-        if (!lobes.diffuse.isBlack() && !lobes.fresnelDiffuse) closedForm = light.unoccludedIrradiance(sh.point, sh.normal);
+        if (exactDirect(state) && !lobes.diffuse.isBlack() && !lobes.fresnelDiffuse)
+            closedForm = light.unoccludedIrradiance(sh.point, sh.normal);
         Spectrum blocked(0.f);  // estimate of the irradiance the closed form counts but obstacles stop
         bool anyThrough = false;  // some controlled shadow ray got through
         int count = light.sampleCount(sh.point, subdivision(state), state.weight);

@@ -91,6 +91,7 @@ private:
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
     uint64_t seedFor(uint64_t index) const;
     double subdivision(const PathState& state) const;
+    bool exactDirect(const PathState& state) const;
     double primaryTmin(const dvec3& org) const;
 
     const RenderScene& scene_;

@@ -58,7 +58,7 @@ int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
     // light has a closed form (shadow rays then only find what is blocked, see Integrator::direct); two for
     // the others, whose random positions need them to be as smooth as Radiance's fixed cell centres.
     double perCell = hasClosedForm() ? 1 : 2;
-    int n = static_cast<int>(std::ceil(std::min(8 * perCell, perCell * angularSize * weight / ratio)));
+    int n = static_cast<int>(std::ceil(std::min(16.0, perCell * angularSize * weight / ratio)));
     return std::max(1, n * n);
 }
 
