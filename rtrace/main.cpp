@@ -157,6 +157,7 @@ int run(int argc, char** argv) {
     if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);
 
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
+    tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
     RayReader reader(std::cin, o.inFormat);
     long limit = o.yres > 0 ? (o.xres > 1 ? long(o.xres) * o.yres : o.yres) : 0;
     long flushEvery = (o.yres == 0 || o.xres <= 1) ? o.xres : 0;

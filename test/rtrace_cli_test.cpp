@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <unistd.h>
 #include <cstdio>
@@ -206,4 +207,25 @@ TEST_F(RtraceCli, SceneFilesOnTheCommandLineIgnoreRaypath) {
     unsetenv("RAYPATH");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_FALSE(r.out.empty());
+}
+
+// A closed box of perfect mirrors with -lr 0 (no reflection limit, weights never drop): roulette still ends
+// every path, and deep ray trees fit the threads' stacks.
+TEST_F(RtraceCli, ClosedBoxOfPerfectMirrorsEndsEveryPath) {
+    writeScene("mirrors.rad",
+               "void mirror m 0 0 3 1 1 1\n"
+               "m polygon a 0 0 12 1 0 0 1 1 0 0 1 0 0 0 0\n"
+               "m polygon b 0 0 12 0 1 1 1 1 1 1 0 1 0 0 1\n"
+               "m polygon c 0 0 12 0 0 1 1 0 1 1 0 0 0 0 0\n"
+               "m polygon d 0 0 12 1 1 0 1 1 1 0 1 1 0 1 0\n"
+               "m polygon e 0 0 12 0 1 0 0 1 1 0 0 1 0 0 0\n"
+               "m polygon f 0 0 12 1 0 1 1 1 1 1 1 0 1 0 0\n"
+               "void light l 0 0 3 1 1 1\nl sphere s 0 0 4 .5 .5 .5 .01\n");
+    std::string rays;
+    for (int i = 0; i < 200; ++i) rays += ".3 .3 .3 " + std::to_string(std::cos(i * 0.7)) + " " + std::to_string(std::sin(i * 0.7)) + " 0.3\n";
+    for (const char* n : {"-n 1", "-n 2"}) {
+        Output r = rtrace(std::string("-h- -lr 0 -lw 1e-9 ") + n + " mirrors.rad", rays);
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 200);
+    }
 }

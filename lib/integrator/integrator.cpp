@@ -12,7 +12,8 @@ namespace brume {
 namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxCrossings = 64;     // surfaces a shadow ray may pass through
-constexpr int kSafetyDepth = 1000;    // roulette ends paths long before; this only stops pathological loops
+constexpr int kRouletteDepth = 64;    // past this many reflections roulette plays whatever -lr says
+constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this only bounds the stack
 
 double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
 }  // namespace
@@ -328,7 +329,8 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
     // Unbiased termination: below -lw by weight, past |lr| reflections by reflectance.
     double survive = 1;
     if (child.weight < settings_.minWeight) survive = child.weight / settings_.minWeight;
-    if (lr < 0 && child.reflections > -lr) survive *= std::min(0.95, w);
+    // (Also past kRouletteDepth with -lr 0, so a closed box of perfect mirrors still ends its paths.)
+    if ((lr < 0 && child.reflections > -lr) || child.reflections > kRouletteDepth) survive *= std::min(0.95, w);
     if (survive < 1) {
         if (ctx.rng.uniform() >= survive) return false;
         boost = float(1 / survive);
