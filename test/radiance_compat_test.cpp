@@ -102,7 +102,9 @@ const Room& room() {
 }
 
 // The mean of `runs` independent estimates of each ray (its value, or irradiance for sensors).
-std::vector<Rgb> brumeMeans(const std::vector<LabelledRay>& rays, bool sensors, int runs, const RenderSettings& s,
+enum class Mode { View, Sensor, IrradianceAtHit };  // rtrace, rtrace -I, rtrace -i
+
+std::vector<Rgb> brumeMeans(const std::vector<LabelledRay>& rays, Mode mode, int runs, const RenderSettings& s,
                             std::vector<Rgb>* standardErrors = nullptr) {
     RenderScene render(room().scene, s.materials);
     Integrator integrator(render, s);
@@ -111,8 +113,9 @@ std::vector<Rgb> brumeMeans(const std::vector<LabelledRay>& rays, bool sensors, 
         Rgb sum{}, sum2{};
         for (int k = 0; k < runs; ++k) {
             uint64_t index = uint64_t(i) * uint64_t(runs) + uint64_t(k);
-            RayRecord r = sensors ? integrator.irradiance(rays[i].org, rays[i].dir, index)
-                                  : integrator.trace(rays[i].org, rays[i].dir, index);
+            RayRecord r = mode == Mode::Sensor            ? integrator.irradiance(rays[i].org, rays[i].dir, index)
+                          : mode == Mode::IrradianceAtHit ? integrator.irradianceAtHit(rays[i].org, rays[i].dir, index)
+                                                          : integrator.trace(rays[i].org, rays[i].dir, index);
             for (int c = 0; c < 3; ++c) sum[c] += r.value[c], sum2[c] += double(r.value[c]) * r.value[c];
         }
         for (int c = 0; c < 3; ++c) {
@@ -185,8 +188,17 @@ constexpr int kRuns = 128;  // estimates averaged per ray
 TEST(RadianceCompat, ViewRaysAgreeWithRadianceForEveryMaterial) {
     auto rays = readRays("rays.txt");
     ASSERT_GE(rays.size(), 90u);  // rays.txt: 99 view rays
-    auto brume = brumeMeans(rays, false, kRuns, referenceSettings());
+    auto brume = brumeMeans(rays, Mode::View, kRuns, referenceSettings());
     Comparison c = compare(rays, brume, readReference("reference_rays.txt"), kPerRay);
+    EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
+    if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
+}
+
+// rtrace -i: irradiance where each view ray first meets an opaque surface, sources at their radiance.
+TEST(RadianceCompat, IrradianceAtFirstOpaqueHitAgreesWithRadiance) {
+    auto rays = readRays("rays.txt");
+    auto brume = brumeMeans(rays, Mode::IrradianceAtHit, kRuns, referenceSettings());
+    Comparison c = compare(rays, brume, readReference("reference_irradiance_at_hit.txt"), kPerRay);
     EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
     if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
 }
@@ -194,7 +206,7 @@ TEST(RadianceCompat, ViewRaysAgreeWithRadianceForEveryMaterial) {
 TEST(RadianceCompat, SensorIrradianceAgreesWithRadiance) {
     auto rays = readRays("sensors.txt");
     ASSERT_GE(rays.size(), 60u);
-    auto brume = brumeMeans(rays, true, kRuns, referenceSettings());
+    auto brume = brumeMeans(rays, Mode::Sensor, kRuns, referenceSettings());
     Comparison c = compare(rays, brume, readReference("reference_sensors.txt"), kPerRay);
     EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
     if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
@@ -212,7 +224,7 @@ TEST(RadianceCompat, SampledGlossyReflectionAgreesWithRadianceMonteCarlo) {
         if (reference.count(r.label)) rays.push_back(r);
     ASSERT_GE(rays.size(), 7u);
     std::vector<Rgb> sem;
-    auto brume = brumeMeans(rays, false, 4000, referenceSettings(0.15), &sem);
+    auto brume = brumeMeans(rays, Mode::View, 4000, referenceSettings(0.15), &sem);
     for (size_t i = 0; i < rays.size(); ++i) {
         const auto& ref = reference[rays[i].label];
         ASSERT_EQ(ref.size(), 6u) << rays[i].label;

@@ -115,36 +115,47 @@ RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t i
     return rec;
 }
 
+// Radiance's -i: transparent surfaces (glass, trans, dielectric, void illums) are passed without their
+// colour; what the ray then sees is a source (its radiance) or an opaque surface (its irradiance, as a
+// white Lambertian sensor). The record names the first surface met, as Radiance's does.
 RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index, RayTree* tree) const {
     Ray ray{org, glm::normalize(dir)};
     ray.tmin = primaryTmin(org);
+    Context ctx{Random(seedFor(index), index), tree};
     RayRecord rec;
     rec.point = org;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
-        if (!hit) return trace(org, dir, index, 0, tree);  // escapes: what it sees is the value
-        int mat = scene_.materialObject(hit->surface);
-        const SceneObject& m = scene_.scene().objects[mat];
-        bool transparent = m.type == "glass" || m.type == "trans" || m.type == "dielectric" ||
-                           (m.type == "illum" && scene_.emitter(mat)->alternate < 0);
-        if (transparent) {
-            ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
-            continue;
+        int mat = hit ? scene_.materialObject(hit->surface) : -1;
+        if (hit && crossing == 0) {
+            rec.firstLength = rec.effectiveLength = hit->t;
+            rec.point = hit->point;
+            rec.normal = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
+            rec.surfaceNormal = hit->normal;
+            rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
+            rec.modifierObject = mat;
         }
-        if (scene_.emitter(mat)) return trace(org, dir, index, 0, tree);
-        dvec3 n = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
-        Context ctx{Random(seedFor(index), index), tree};
-        Shading sh{hit->point, n, -n, 1.0, false, false, hit->t};
-        Lobes lobes;
-        lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
-        rec.firstLength = rec.effectiveLength = glm::length(hit->point - org);
-        rec.point = hit->point;
-        rec.normal = n;
-        rec.surfaceNormal = hit->normal;
-        rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
-        rec.modifierObject = mat;
-        rec.value = shadeAsRoot(sh, lobes, hit->surface, ctx, rec, ray.dir);
-        return rec;
+        const Emitter* e = hit ? scene_.emitter(mat) : nullptr;
+        auto isTransparent = [&](int m) {
+            const std::string& type = scene_.scene().objects[m].type;
+            return type == "glass" || type == "trans" || type == "dielectric";
+        };
+        // An illum is seen as its alternate material, or not at all.
+        bool transparent = hit && (e && e->kind == Emitter::Kind::Illum ? e->alternate < 0 || isTransparent(e->alternate)
+                                                                         : isTransparent(mat));
+        if (!hit || (e && !transparent)) {
+            rec.value = radiance(ray, PathState{}, ctx, nullptr, nullptr);
+            return rec;
+        }
+        if (!transparent) {
+            dvec3 n = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
+            Shading sh{hit->point, n, -n, 1.0, false, false, hit->t};
+            Lobes lobes;
+            lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
+            rec.value = shadeAsRoot(sh, lobes, hit->surface, ctx, rec, ray.dir);
+            return rec;
+        }
+        ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
     }
     return rec;
 }

@@ -2,7 +2,8 @@
 # Regenerates the Radiance reference values for test/radiance_compat_test.cpp from an installed Radiance
 # (oconv and rtrace on PATH, RAYPATH with rayinit.cal). Run it in this directory:
 #     PATH=/path/to/radiance/bin:$PATH RAYPATH=.:/path/to/radiance/lib ./make_reference.sh
-# It writes reference_rays.txt, reference_sensors.txt and reference_glossy.txt ("label r g b", the
+# It writes reference_rays.txt, reference_sensors.txt, reference_irradiance_at_hit.txt (-i) and
+# reference_glossy.txt ("label r g b", the
 # glossy file adding the standard errors of the means) and prints the rtrace version to put in README.md.
 set -eu
 cd "$(dirname "$0")"
@@ -35,6 +36,7 @@ run() {
 }
 run rays.txt "" reference_rays.txt
 run sensors.txt " -I" reference_sensors.txt
+run rays.txt " -i" reference_irradiance_at_hit.txt
 
 echo "# label  mean R G B  standard error R G B  (rtrace $GLOSSY_OPTS, $REPEATS rays each, $BUG_REPEATS for metal_sheet_window)" > reference_glossy.txt
 for label in $GLOSSY; do
