@@ -82,8 +82,8 @@ OptionTable makeTable(Options& o) {
     return t;
 }
 
-void usage(const OptionTable& table) {
-    std::cerr << "usage: rtrace [options] octree|scene.rad ... < rays\n" << table.usage();
+void usage(const OptionTable& table, std::ostream& out) {
+    out << "usage: rtrace [options] octree|scene.rad ... < rays\n" << table.usage();
 }
 
 // Radiance's header: the octree's header, the command, the software, NCOMP and FORMAT.
@@ -123,7 +123,7 @@ int run(int argc, char** argv) {
     size_t first = table.parse(args);
     setWarningsEnabled(o.warnings);
     if (o.immediate == "-help") {
-        usage(table);
+        usage(table, std::cout);
         return 0;
     }
     if (o.immediate == "-version") {
@@ -141,7 +141,7 @@ int run(int argc, char** argv) {
     if (o.render.maxReflections <= 0 && !(o.render.minWeight > 0))
         throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
     if (first >= args.size()) {
-        usage(table);
+        usage(table, std::cerr);
         throw Error("missing octree or scene file argument");
     }
     if (o.render.ambientBounces > 0 && o.render.ambientAccuracy > 0)

@@ -72,7 +72,7 @@ std::string OptionTable::usage() const {
         if (o.kind == Kind::Bool) syntax += "[+-]";
         else if (o.kind == Kind::Attached) syntax += "...";
         else
-            for (int k = 0; k < o.count; ++k) syntax += k == 0 ? " v" : " v";
+            for (int k = 0; k < o.count; ++k) syntax += " v";
         out << "  " << syntax << std::string(syntax.size() < 16 ? 16 - syntax.size() : 1, ' ') << o.help << '\n';
     }
     return out.str();
