@@ -145,7 +145,7 @@ int run(int argc, char** argv) {
         throw Error("missing octree or scene file argument");
     }
     if (o.render.ambientBounces > 0 && o.render.ambientAccuracy > 0)
-        warnOnce("no irradiance cache yet: -aa > 0 is computed by path tracing, as -aa 0");
+        warnOnce("no irradiance cache yet: -aa > 0 path-traces, and continues past -ab by Russian roulette as Radiance's cache carries further bounces (-aa 0: exactly -ab bounces)");
     if (o.irradiance && o.irradianceAtHit) throw Error("-I and -i are exclusive");
     std::vector<std::string> command{programName()};
     command.insert(command.end(), args.begin(), args.begin() + first);

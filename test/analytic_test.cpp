@@ -100,6 +100,7 @@ struct IntegratingSphere {
 TEST(Analytic, IntegratingSphereMatchesAnalyticAtEachBounceCount) {
     IntegratingSphere sphere{0.5};
     RenderSettings s = fixedSeed();
+    s.ambientAccuracy = 0;  // -aa 0: exactly -ab bounces
     s.ambientDivisions = 2048;
     for (int bounces : {0, 1, 2, 5}) {
         s.ambientBounces = bounces;
@@ -108,11 +109,25 @@ TEST(Analytic, IntegratingSphereMatchesAnalyticAtEachBounceCount) {
     }
 }
 
+// A typical call (-ab 5 with Radiance's -aa .1, which would use its cache) reaches the all-bounce answer:
+// the bounces past -ab go on by Russian roulette. Tolerance 1.5% as above.
+TEST(Analytic, TypicalCallReachesTheAllBounceAnswer) {
+    IntegratingSphere sphere{0.8};
+    RenderSettings s = fixedSeed();
+    s.ambientBounces = 5;
+    s.ambientDivisions = 4096;
+    double expected = sphere.direct() / (1 - 0.8);
+    EXPECT_NEAR(sphere.measure(s), expected, 0.015 * expected);
+    s.ambientAccuracy = 0;  // exactly five bounces: (1 − ρ⁶)/(1 − ρ) of it
+    EXPECT_NEAR(sphere.measure(s), sphere.afterBounces(5), 0.015 * sphere.afterBounces(5));
+}
+
 // With Radiance's default -lr -10, a ρ = 0.8 sphere at -ab 100 must not lose the light beyond ten
 // reflections (Radiance loses 8.5% there): Russian roulette keeps the estimate unbiased.
 TEST(Analytic, IntegratingSphereReachesTheAllBounceLimitThroughRussianRoulette) {
     IntegratingSphere sphere{0.8};
     RenderSettings s = fixedSeed();
+    s.ambientAccuracy = 0;
     s.ambientDivisions = 4096;
     s.ambientBounces = 100;
     double expected = sphere.direct() / (1 - 0.8);

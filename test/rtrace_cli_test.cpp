@@ -166,8 +166,8 @@ TEST_F(RtraceCli, UnknownOptionsAndMissingSceneAreErrors) {
 TEST_F(RtraceCli, AmbientAccuracyWarnsOnceThatItPathTraces) {
     Output r = rtrace("-h- -ab 1 -ad 4 s.rad", "0 0 1 0 0 -1\n0 0 1 0 0 -1\n");
     EXPECT_EQ(r.status, 0);
-    EXPECT_NE(r.err.find("path tracing"), std::string::npos);
-    EXPECT_EQ(r.err.find("path tracing"), r.err.rfind("path tracing"));
+    EXPECT_NE(r.err.find("path-traces"), std::string::npos);
+    EXPECT_EQ(r.err.find("path-traces"), r.err.rfind("path-traces"));
 }
 
 // Trace mode: each ray of the tree after its children, one tab per level, then the per-ray fields; -oT

@@ -86,6 +86,13 @@ double Integrator::subdivision(const PathState& state) const {
 
 bool Integrator::exactDirect(const PathState& state) const { return state.depth == 0; }
 
+// With -aa > 0 a Radiance user expects its irradiance cache, which carries light of further bounces between
+// its -ab levels and lands near the all-bounce answer. Until Brume's cache exists, paths past the -ab-th
+// bounce go on by Russian roulette instead (unless -av gives a value for them): unbiased, one path each.
+bool Integrator::bounceTail() const {
+    return settings_.ambientAccuracy > 0 && settings_.ambientBounces > 0 && settings_.ambientValue.isBlack();
+}
+
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }
 
 RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance,
@@ -326,7 +333,7 @@ Spectrum Integrator::sampledSourceShare(const Spectrum& le, int light, const Pat
 }
 
 bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
-                       float& boost) const {
+                       float& boost, bool roulette) const {
     double w = std::min(1.0, double(coef.maxValue()));
     child = parent;
     child.weight = parent.weight * w;
@@ -341,7 +348,8 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
     double survive = 1;
     if (child.weight < settings_.minWeight) survive = child.weight / settings_.minWeight;
     // (Also past kRouletteDepth with -lr 0, so a closed box of perfect mirrors still ends its paths.)
-    if ((lr < 0 && child.reflections > -lr) || child.reflections > kRouletteDepth) survive *= std::min(0.95, w);
+    if (roulette || (lr < 0 && child.reflections > -lr) || child.reflections > kRouletteDepth)
+        survive *= std::min(0.95, w);
     if (survive < 1) {
         if (ctx.rng.uniform() >= survive) return false;
         boost = float(1 / survive);
@@ -629,13 +637,14 @@ Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface,
     for (bool transmit : {false, true}) {
         const Spectrum& coef = transmit ? lobes.ambientTrans : lobes.ambient;
         if (coef.isBlack()) continue;
-        if (state.ambientLevel >= settings_.ambientBounces || settings_.ambientDivisions <= 0) {
+        bool beyond = state.ambientLevel >= settings_.ambientBounces;
+        if ((beyond && !bounceTail()) || settings_.ambientDivisions <= 0) {
             sum += coef * settings_.ambientValue;
             continue;
         }
         PathState child;
         float boost;
-        if (!spawn(state, child, coef, !transmit, ctx, boost)) continue;
+        if (!spawn(state, child, coef, !transmit, ctx, boost, beyond)) continue;
         int count = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
         child.kind = PathState::Kind::Sampled;
         child.ambientLevel = state.ambientLevel + 1;

@@ -87,7 +87,8 @@ private:
     bool clipped(int modifier, const PathState& state) const;
     bool crossesAntimatter(int material, bool backside, PathState& state) const;
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
-               float& boost) const;
+               float& boost, bool roulette = false) const;
+    bool bounceTail() const;
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
     uint64_t seedFor(uint64_t index) const;
     double subdivision(const PathState& state) const;
