@@ -1,61 +1,17 @@
+// Radiance along rays: shading at hits, specular and sampled glossy rays, diffuse interreflection by path
+// tracing, sources met by rays, Russian roulette. Next-event estimation is in direct_light.cpp.
 #include "integrator/integrator.h"
 
 #include <chrono>
 #include <cmath>
-#include <numbers>
 
+#include "integrator/path_state.h"
 #include "material/ward.h"
 #include "sampling/warp.h"
 
 namespace brume {
 
-namespace {
-constexpr double kPi = std::numbers::pi;
-constexpr int kMaxCrossings = 64;     // surfaces a shadow ray may pass through
-constexpr int kRouletteDepth = 64;    // past this many reflections roulette plays whatever -lr says
-constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this only bounds the stack
-
-double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
-}  // namespace
-
-// How the ray being traced was chosen, which decides how it counts the light sources it meets.
-struct Integrator::PathState {
-    enum class Kind { Primary, Specular, Sampled } kind = Kind::Primary;
-    int reflections = 0;   // for -lr
-    int ambientLevel = 0;  // diffuse bounces so far, for -ab and -ad
-    double weight = 1;     // Radiance's ray weight, for -lw
-    // For sampled rays: where they left, with which density × count (for MIS) and that point's weight.
-    dvec3 from{0};
-    double sampledDensity = 0;
-    double fromWeight = 1;
-    double fromSubdivision = 0;  // the -ds ratio next-event estimation used there
-    int depth = 0;
-    // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
-    // next-event estimation through their mirror images.
-    int viaMirror = -1;
-    // Antimatter volumes the ray is inside (scene objects), which hide the surfaces they cut.
-    static constexpr int kMaxClips = 8;
-    int clips[kMaxClips];
-    int clipCount = 0;
-
-    bool enters(int antimatter) {
-        for (int i = 0; i < clipCount; ++i)
-            if (clips[i] == antimatter) return false;
-        if (clipCount == kMaxClips) return false;
-        clips[clipCount++] = antimatter;
-        return true;
-    }
-    void leaves(int antimatter) {
-        for (int i = 0; i < clipCount; ++i)
-            if (clips[i] == antimatter) clips[i] = clips[--clipCount];
-    }
-};
-
-struct Integrator::Context {
-    Random rng;
-    RayTree* tree = nullptr;
-    int depth = 0;  // of the ray being traced in its tree
-};
+using namespace integrator_detail;
 
 Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings) {
@@ -72,19 +28,6 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
 double Integrator::primaryTmin(const dvec3& org) const {
     return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
 }
-
-// Where a primary ray lands (or at a sensor), the value is the answer itself and nothing averages its
-// noise: twice the shadow rays per axis, and diffuse light in closed form. Deeper in a path many paths
-// average, and cheaper estimates win.
-// With -ab, the shadow rays there grow with √-ad, so that penumbrae get as smooth as the interreflected
-// light the -ad paths estimate.
-double Integrator::subdivision(const PathState& state) const {
-    if (state.depth > 0) return settings_.sourceSubdivision;
-    double paths = settings_.ambientBounces > 0 ? std::max(settings_.ambientDivisions, 0) : 0;
-    return settings_.sourceSubdivision / std::max(2.0, std::sqrt(paths) / 8);
-}
-
-bool Integrator::exactDirect(const PathState& state) const { return state.depth == 0; }
 
 // With -aa > 0 a Radiance user expects its irradiance cache, which carries light of further bounces between
 // its -ab levels and lands near the all-bounce answer. Until Brume's cache exists, paths past the -ab-th
@@ -401,199 +344,6 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
     if (record && brightness(value) > 0 && strongest < 0.5 * brightness(value))
         record->effectiveLength = record->firstLength;
     return value.clampFinite();
-}
-
-// Every source sample. Diffuse lobes take their source light from here alone, as in Radiance (a few
-// stratified shadow rays beat thousands of diffuse rays that rarely find a small source); glossy lobes
-// that are also sampled by rays share it with them by the power heuristic.
-Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
-                            Context& ctx) const {
-    Spectrum sum(0.f);
-    for (const Light& light : scene_.lights()) {
-        const Emitter& e = light.emitter();
-        if (!e.isDirectSource() || (surface >= 0 && light.surface() == surface)) continue;
-        // Diffuse light of a uniform source: its unoccluded value in closed form, less what the shadow rays
-        // find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
-        double closedForm = -1;
-        if (exactDirect(state) && !lobes.diffuse.isBlack() && !lobes.fresnelDiffuse)
-            closedForm = light.unoccludedIrradiance(sh.point, sh.normal);
-        Spectrum blocked(0.f);  // estimate of the irradiance the closed form counts but obstacles stop
-        bool anyThrough = false;  // some controlled shadow ray got through
-        int count = light.sampleCount(sh.point, subdivision(state), state.weight);
-        uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
-        LightView view = light.view(sh.point);
-        for (int k = 0; k < count; ++k) {
-            double u, v;
-            sobol2D(k, scramble, u, v);
-            auto s = light.sample(view, u, v);
-            if (!s || s->radiance.isBlack()) continue;
-            if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
-            double lightDensity = s->pdf * count;
-            double cosL = glm::dot(sh.normal, s->dir);
-            bool controlled = closedForm >= 0 && cosL > 0;
-            Spectrum f = response(sh, lobes, s->dir, lightDensity, !controlled);
-            if (f.isBlack() && !controlled) continue;
-            Spectrum le = sourceRadiance(light, *s);
-            Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
-                                             light, state);
-            if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
-            sum += f * t * le * float(1 / lightDensity);
-            if (controlled) {
-                blocked += (Spectrum(1.f) - t) * float(cosL / lightDensity);
-                anyThrough = anyThrough || !t.isBlack();
-            }
-        }
-        if (closedForm >= 0 && anyThrough) {
-            // Every ray blocked means shadow: 0, not the closed form less a noisy estimate of itself (for the
-            // sun, that noise alone would be a visible glow in every shadow). In penumbrae the estimate of
-            // what is blocked can still exceed the whole: never below 0.
-            Spectrum unblocked = Spectrum(float(closedForm)) - blocked;
-            for (int c = 0; c < unblocked.size(); ++c) unblocked[c] = std::max(0.f, unblocked[c]);
-            sum += lobes.diffuse * e.radiance * unblocked * float(1 / kPi);
-        }
-    }
-    if (mirrorImagesOn()) sum += directViaMirrors(sh, lobes, surface, state, ctx);
-    return sum;
-}
-
-// The lobes' response f·|cos| to light from direction l. A glossy lobe that is also sampled by rays takes
-// its share against the source's sampling density (power heuristic); lightDensity 0 gives every lobe
-// all of it (sources no ray will count).
-Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
-                              bool withDiffuse) const {
-    dvec3 wo = -sh.dir;
-    double cosL = glm::dot(sh.normal, l);
-    Spectrum f(0.f);
-    auto add = [&](const Spectrum& coef, double brdf, bool sampled, double density) {
-        double w = sampled && lightDensity > 0 ? powerHeuristic(lightDensity, density) : 1.0;
-        f += coef * float(brdf * std::abs(cosL) * w);
-    };
-    if (cosL > 0) {
-        double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(cosL) : 1.0;
-        if (withDiffuse && !lobes.diffuse.isBlack()) add(lobes.diffuse, fresnel / kPi, false, 0);
-        if (!lobes.glossy.isBlack())
-            add(lobes.glossy, wardBrdf(wo, l, sh.normal, lobes.alpha2), lobes.sampleGlossy,
-                wardPdf(wo, l, sh.normal, lobes.alpha2));
-    } else if (cosL < 0) {
-        double fresnel = lobes.fresnelDiffuse ? 1 - fresnelEstimate(-cosL) : 1.0;
-        if (!lobes.diffuseTrans.isBlack()) add(lobes.diffuseTrans, fresnel / kPi, false, 0);
-        if (!lobes.glossyTrans.isBlack())
-            add(lobes.glossyTrans, gaussianBtdf(sh.dir, l, lobes.alphaT2, sh.cosine, -cosL), lobes.sampleGlossyTrans,
-                gaussianTransmissionPdf(sh.dir, l, lobes.alphaT2));
-    }
-    return f;
-}
-
-// The radiance a source sample sends, with Radiance's spotlight focus: a spotlight acts as if it were its
-// focal distance farther behind its surface.
-Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s) const {
-    const Emitter& e = light.emitter();
-    Spectrum le = s.radiance;
-    if (e.kind == Emitter::Kind::Spotlight && std::isfinite(s.distance))
-        le *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
-    return le;
-}
-
-void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
-                                 const Spectrum& value) const {
-    RayRecord shadow;
-    shadow.value = value;
-    shadow.firstLength = shadow.effectiveLength = s.distance;
-    shadow.point = from + (std::isfinite(s.distance) ? s.distance : 0.0) * s.dir;
-    shadow.surfaceObject = light.object();
-    shadow.modifierObject = scene_.scene().objects[light.object()].modifier;
-    ctx.tree->rays.push_back({ctx.depth, from, s.dir, shadow});
-}
-
-// Sources seen in flat mirrors (Radiance's virtual sources, one relay): each source is sampled as seen
-// from the shading point's mirror image, and the shadow ray goes to the mirror and on to the source.
-// Sampled rays that take the same route count nothing (see emitterHit), so each path counts once.
-Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
-                                      Context& ctx) const {
-    Spectrum sum(0.f);
-    for (const PlanarMirror& mirror : scene_.planarMirrors()) {
-        double height = glm::dot(mirror.normal, sh.point) - mirror.offset;
-        if (mirror.surface == surface || height <= 0) continue;  // mirrors reflect from their front only
-        dvec3 image = sh.point - 2 * height * mirror.normal;
-        for (const Light& light : scene_.lights()) {
-            const Emitter& e = light.emitter();
-            // Glows, lit only within a radius, are left to rays.
-            if (!e.isDirectSource() || e.kind == Emitter::Kind::Glow ||
-                (light.isDistant() && glm::dot(light.direction(), mirror.normal) <= 0))
-                continue;
-            int count = light.sampleCount(image, subdivision(state), state.weight);
-            uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
-            LightView view = light.view(image);
-            for (int k = 0; k < count; ++k) {
-                double u, v;
-                sobol2D(k, scramble, u, v);
-                auto s = light.sample(view, u, v);
-                if (!s || s->radiance.isBlack()) continue;
-                dvec3 d = s->dir - 2 * glm::dot(s->dir, mirror.normal) * mirror.normal;  // toward the image
-                double toMirror = -height / glm::dot(mirror.normal, d);
-                if (!(toMirror > 0) || toMirror >= s->distance) continue;
-                Spectrum f = response(sh, lobes, d, 0);
-                if (f.isBlack()) continue;
-                PathState crossing = state;
-                SurfaceHit onMirror;
-                Spectrum t = transmittance(Ray{sh.point, d, std::numeric_limits<double>::infinity(), surface},
-                                           mirror.surface, false, e.kind, crossing, &onMirror);
-                if (t.isBlack()) continue;
-                t *= shadowTransmittance(Ray{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface},
-                                         light, crossing);
-                if (!t.isBlack()) sum += f * sourceRadiance(light, *s) * mirror.reflectance * t * float(1 / (s->pdf * count));
-            }
-        }
-    }
-    return sum;
-}
-
-// What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
-// clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
-Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state) const {
-    return transmittance(ray, light.surface(), light.isDistant(), light.emitter().kind, state, nullptr);
-}
-
-// Along a shadow ray to surface `target` (or, for a source at infinity, out of the scene): the
-// transmission of what it crosses, black if blocked. `reached` receives the hit on the target.
-Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
-                                   SurfaceHit* reached) const {
-    Spectrum t(1.f);
-    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
-        auto hit = scene_.geometry().intersect(ray);
-        if (!hit) return toInfinity ? t : Spectrum(0.f);
-        int mat = scene_.materialObject(hit->surface);
-        bool cut = (state.clipCount > 0 && clipped(mat, state)) ||
-                   crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
-        if (cut) {
-            ray.org = hit->point;
-            ray.leaving = hit->surface;
-            continue;
-        }
-        if (hit->surface == target) {
-            if (reached) *reached = *hit;
-            return t;
-        }
-        const Emitter* e = scene_.emitter(mat);
-        bool back = glm::dot(hit->normal, ray.dir) > 0;
-        if (e && e->kind != Emitter::Kind::Illum) return Spectrum(0.f);  // another source blocks
-        // An illum stands for the light coming through it: it hides other illums and glows behind it.
-        if (e && !back && (targetKind == Emitter::Kind::Illum || targetKind == Emitter::Kind::Glow))
-            return Spectrum(0.f);
-        // Otherwise a shadow ray crosses an illum as it would its alternate material.
-        const Material* m = e ? (e->alternate >= 0 ? scene_.material(e->alternate) : nullptr) : scene_.material(mat);
-        if (m) {
-            Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir, std::abs(glm::dot(hit->normal, ray.dir)),
-                       back, false, hit->t};
-            dvec3 dir = ray.dir;
-            t *= m->shadowTransmission(sh, dir);
-            if (t.maxValue() <= 1e-6f) return Spectrum(0.f);
-            ray.dir = dir;
-        }
-        ray.org = hit->point;
-        ray.leaving = hit->surface;
-    }
-    return Spectrum(0.f);
 }
 
 // One ray per sampled glossy lobe, weighted against next-event estimation where it meets a source.

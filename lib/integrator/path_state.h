@@ -1,0 +1,57 @@
+// The state a path carries from ray to ray, and the per-ray context, shared by the integrator's parts.
+#pragma once
+#include <numbers>
+
+#include "integrator/integrator.h"
+
+namespace brume {
+
+namespace integrator_detail {
+constexpr double kPi = std::numbers::pi;
+constexpr int kMaxCrossings = 64;     // surfaces a shadow ray may pass through
+constexpr int kRouletteDepth = 64;    // past this many reflections roulette plays whatever -lr says
+constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this only bounds the stack
+
+inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
+}  // namespace integrator_detail
+
+// How the ray being traced was chosen, which decides how it counts the light sources it meets.
+struct Integrator::PathState {
+    enum class Kind { Primary, Specular, Sampled } kind = Kind::Primary;
+    int reflections = 0;   // for -lr
+    int ambientLevel = 0;  // diffuse bounces so far, for -ab and -ad
+    double weight = 1;     // Radiance's ray weight, for -lw
+    // For sampled rays: where they left, with which density × count (for MIS) and that point's weight.
+    dvec3 from{0};
+    double sampledDensity = 0;
+    double fromWeight = 1;
+    double fromSubdivision = 0;  // the -ds ratio next-event estimation used there
+    int depth = 0;
+    // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
+    // next-event estimation through their mirror images.
+    int viaMirror = -1;
+    // Antimatter volumes the ray is inside (scene objects), which hide the surfaces they cut.
+    static constexpr int kMaxClips = 8;
+    int clips[kMaxClips];
+    int clipCount = 0;
+
+    bool enters(int antimatter) {
+        for (int i = 0; i < clipCount; ++i)
+            if (clips[i] == antimatter) return false;
+        if (clipCount == kMaxClips) return false;
+        clips[clipCount++] = antimatter;
+        return true;
+    }
+    void leaves(int antimatter) {
+        for (int i = 0; i < clipCount; ++i)
+            if (clips[i] == antimatter) clips[i] = clips[--clipCount];
+    }
+};
+
+struct Integrator::Context {
+    Random rng;
+    RayTree* tree = nullptr;
+    int depth = 0;  // of the ray being traced in its tree
+};
+
+}  // namespace brume
