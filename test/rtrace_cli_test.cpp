@@ -229,3 +229,12 @@ TEST_F(RtraceCli, ClosedBoxOfPerfectMirrorsEndsEveryPath) {
         EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 200);
     }
 }
+
+// -ld: the length of the direction vector limits the ray; binary input carries native numbers.
+TEST_F(RtraceCli, DistanceLimitAndBinaryInput) {
+    EXPECT_EQ(rtrace("-h- -ld -oL s.rad", "0 0 1 0 0 -0.5\n0 0 1 0 0 -2\n").out, "1.000000e+10\t\n1.000000e+00\t\n");
+    double d[6] = {0, 0, 1, 0, 0, -1};
+    float f[6] = {0, 0, 1, 0, 0, -1};
+    EXPECT_EQ(rtrace("-h- -fda -oL s.rad", std::string(reinterpret_cast<char*>(d), sizeof d)).out, "1.000000e+00\t\n");
+    EXPECT_EQ(rtrace("-h- -ffa -oL s.rad", std::string(reinterpret_cast<char*>(f), sizeof f)).out, "1.000000e+00\t\n");
+}
