@@ -62,21 +62,17 @@ OptionTable makeTable(Options& o) {
     t.addAttached("-p", "output colour space: RGB (others not yet)", [](const std::string& v) {
         if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
     });
-    auto notYet = [&t](const std::string& name, int count, const std::string& what) {
-        t.add(name, count, what + " (not supported yet)",
-              [name](const auto&) { throw Error("option " + name + " is not supported by Brume yet"); });
-    };
-    notYet("-pc", 8, "output colour primaries");
-    notYet("-cs", 1, "spectral samples");
-    notYet("-cw", 2, "spectral range");
+    t.addUnsupported("-pc", 8, "output colour primaries");
+    t.addUnsupported("-cs", 1, "spectral samples");
+    t.addUnsupported("-cw", 2, "spectral range");
     t.addAttached("-co", "spectral output (not supported yet)",
                   [](const std::string&) { throw Error("option -co is not supported by Brume yet"); });
     t.addAttached("-ap", "photon maps (not supported)",
                   [](const std::string&) { throw Error("photon maps (-ap) are not supported by Brume"); });
-    notYet("-am", 1, "photon search radius");
-    for (const char* name : {"-ti", "-te", "-tI", "-tE"}) notYet(name, 1, "trace include/exclude");
-    notYet("-P", 1, "persistent mode");
-    notYet("-PP", 1, "persistent mode");
+    t.addUnsupported("-am", 1, "photon search radius");
+    for (const char* name : {"-ti", "-te", "-tI", "-tE"}) t.addUnsupported(name, 1, "trace include/exclude");
+    t.addUnsupported("-P", 1, "persistent mode");
+    t.addUnsupported("-PP", 1, "persistent mode");
     for (const char* name : {"-defaults", "-help", "-version", "-features"})
         t.add(name, 0, "print and exit", [&o, name](const auto&) { o.immediate = name; });
     return t;

@@ -238,3 +238,13 @@ TEST_F(RtraceCli, DistanceLimitAndBinaryInput) {
     EXPECT_EQ(rtrace("-h- -fda -oL s.rad", std::string(reinterpret_cast<char*>(d), sizeof d)).out, "1.000000e+00\t\n");
     EXPECT_EQ(rtrace("-h- -ffa -oL s.rad", std::string(reinterpret_cast<char*>(f), sizeof f)).out, "1.000000e+00\t\n");
 }
+
+// Options of later work are refused by name, not ignored.
+TEST_F(RtraceCli, OptionsNotSupportedYetAreRefusedByName) {
+    for (const char* opt : {"-af cache.amb", "-me .1 .1 .1", "-cs 41", "-ti mod", "-pY"}) {
+        Output r = rtrace(std::string(opt) + " s.rad", "0 0 1 0 0 -1\n");
+        EXPECT_NE(r.status, 0) << opt;
+        EXPECT_EQ(r.out, "") << opt;
+        EXPECT_NE(r.err.find("not supported by Brume yet"), std::string::npos) << opt << ": " << r.err;
+    }
+}

@@ -28,13 +28,6 @@ void addColor(OptionTable& t, const std::string& name, Spectrum& v, const std::s
           [&v] { return real(v[0]) + " " + real(v[1]) + " " + real(v[2]); });
 }
 
-// Options of later work (cache files, ambient include/exclude lists, media): accepted so that scripts
-// run, refused when they would change the result.
-void addNotYet(OptionTable& t, const std::string& name, int count, const std::string& help) {
-    t.add(name, count, help + " (not supported yet)",
-          [name](const auto&) { throw Error("option " + name + " is not supported by Brume yet"); });
-}
-
 }  // namespace
 
 void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) {
@@ -57,15 +50,15 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addInt(t, "-ar", s.ambientResolution, "ambient resolution");
     addInt(t, "-ad", s.ambientDivisions, "ambient divisions: paths at the first bounce");
     addInt(t, "-as", s.ambientSupersamples, "ambient super-samples");
-    addNotYet(t, "-af", 1, "ambient cache file");
-    addNotYet(t, "-ae", 1, "ambient exclude modifier");
-    addNotYet(t, "-ai", 1, "ambient include modifier");
-    addNotYet(t, "-aE", 1, "ambient exclude file");
-    addNotYet(t, "-aI", 1, "ambient include file");
-    addNotYet(t, "-me", 3, "mist extinction coefficient");
-    addNotYet(t, "-ma", 3, "mist scattering albedo");
-    addNotYet(t, "-mg", 1, "mist scattering eccentricity");
-    addNotYet(t, "-ms", 1, "mist sampling distance");
+    t.addUnsupported("-af", 1, "ambient cache file");
+    t.addUnsupported("-ae", 1, "ambient exclude modifier");
+    t.addUnsupported("-ai", 1, "ambient include modifier");
+    t.addUnsupported("-aE", 1, "ambient exclude file");
+    t.addUnsupported("-aI", 1, "ambient include file");
+    t.addUnsupported("-me", 3, "mist extinction coefficient");
+    t.addUnsupported("-ma", 3, "mist scattering albedo");
+    t.addUnsupported("-mg", 1, "mist scattering eccentricity");
+    t.addUnsupported("-ms", 1, "mist sampling distance");
     addInt(t, "-lr", s.maxReflections, "limit reflections (< 0: Russian roulette past |lr|)");
     addReal(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
 }

@@ -14,6 +14,11 @@ void OptionTable::add(const std::string& name, int count, const std::string& hel
     options_.push_back({name, Kind::Separate, count, help, std::move(apply), std::move(current)});
 }
 
+void OptionTable::addUnsupported(const std::string& name, int count, const std::string& help) {
+    add(name, count, help + " (not supported yet)",
+        [name](const std::vector<std::string>&) { throw Error("option " + name + " is not supported by Brume yet"); });
+}
+
 void OptionTable::addBool(const std::string& name, bool& value, const std::string& help) {
     bool* v = &value;
     options_.push_back({name, Kind::Bool, 0, help,

@@ -20,6 +20,9 @@ public:
              std::function<std::string()> current = {});
     // A boolean switch.
     void addBool(const std::string& name, bool& value, const std::string& help);
+    // An option of Radiance's that Brume does not have yet: listed in the usage, refused when given, so a
+    // script that depends on it fails instead of silently computing something else.
+    void addUnsupported(const std::string& name, int count, const std::string& help);
     // An option whose value is the rest of the word (-ovd, -faf); the value may be empty.
     void addAttached(const std::string& name, const std::string& help, std::function<void(const std::string&)> apply,
                      std::function<std::string()> current = {});
