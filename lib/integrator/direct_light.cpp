@@ -196,16 +196,14 @@ Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter
             return t;
         }
         const Emitter* e = scene_.emitter(mat);
-        bool back = glm::dot(hit->normal, ray.dir) > 0;
+        Shading sh = shadingAt(ray, *hit, false);
         if (e && e->kind != Emitter::Kind::Illum) return Spectrum(0.f);  // another source blocks
         // An illum stands for the light coming through it: it hides other illums and glows behind it.
-        if (e && !back && (targetKind == Emitter::Kind::Illum || targetKind == Emitter::Kind::Glow))
+        if (e && !sh.backside && (targetKind == Emitter::Kind::Illum || targetKind == Emitter::Kind::Glow))
             return Spectrum(0.f);
         // Otherwise a shadow ray crosses an illum as it would its alternate material.
         const Material* m = e ? (e->alternate >= 0 ? scene_.material(e->alternate) : nullptr) : scene_.material(mat);
         if (m) {
-            Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir, std::abs(glm::dot(hit->normal, ray.dir)),
-                       back, false, hit->t};
             dvec3 dir = ray.dir;
             t *= m->shadowTransmission(sh, dir);
             if (t.maxValue() <= 1e-6f) return Spectrum(0.f);

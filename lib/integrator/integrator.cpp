@@ -50,18 +50,13 @@ RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, 
     return rec;
 }
 
-// Irradiance as Radiance's -I computes it: a white Lambertian sensor of reflectance π, so that its
-// outgoing "radiance" is the irradiance E itself.
 RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t index, RayTree* tree) const {
     Context ctx{Random(seedFor(index), index), tree};
     dvec3 n = glm::normalize(normal);
-    Shading sh{p + primaryTmin(p) * n, n, -n, 1.0, false, false, 0.0};
-    Lobes lobes;
-    lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
     RayRecord rec;
     rec.point = p;
     rec.normal = rec.surfaceNormal = n;
-    rec.value = shadeAsRoot(sh, lobes, -1, ctx, rec, -n);
+    rec.value = sensorIrradiance(p + primaryTmin(p) * n, n, -1, 0.0, ctx, rec, -n);
     return rec;
 }
 
@@ -80,7 +75,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
         if (hit && crossing == 0) {
             rec.firstLength = rec.effectiveLength = hit->t;
             rec.point = hit->point;
-            rec.normal = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
+            rec.normal = shadingAt(ray, *hit, false).normal;
             rec.surfaceNormal = hit->normal;
             rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
             rec.modifierObject = mat;
@@ -98,11 +93,8 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
             return rec;
         }
         if (!transparent) {
-            dvec3 n = glm::dot(hit->normal, ray.dir) > 0 ? -hit->normal : hit->normal;
-            Shading sh{hit->point, n, -n, 1.0, false, false, hit->t};
-            Lobes lobes;
-            lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
-            rec.value = shadeAsRoot(sh, lobes, hit->surface, ctx, rec, ray.dir);
+            dvec3 n = shadingAt(ray, *hit, false).normal;
+            rec.value = sensorIrradiance(hit->point, n, hit->surface, hit->t, ctx, rec, ray.dir);
             return rec;
         }
         ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
@@ -127,9 +119,13 @@ bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) con
     return true;
 }
 
-// Shading that stands for a primary ray (the -I sensor, the -i surface): its rays are its children.
-Spectrum Integrator::shadeAsRoot(const Shading& sh, const Lobes& lobes, int surface, Context& ctx, RayRecord& rec,
-                                 const dvec3& dir) const {
+// Irradiance as Radiance computes it for -I and -i: the value of a white Lambertian sensor of reflectance π
+// facing n. It stands for a primary ray: in a ray tree, its rays are its children.
+Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, int surface, double distance, Context& ctx,
+                                      RayRecord& rec, const dvec3& dir) const {
+    Shading sh{point, n, -n, 1.0, false, false, distance};
+    Lobes lobes;
+    lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
     ctx.depth = ctx.tree ? 1 : 0;
     Spectrum value = shade(sh, lobes, surface, PathState{}, ctx, nullptr);
     if (ctx.tree) {
@@ -163,10 +159,8 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
     if (state.clipCount > 0 && clipped(mat, state)) return passThrough(ray, *hit, state, ctx, record, misEmission);
     if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, crossed))
         return passThrough(ray, *hit, crossed, ctx, record, misEmission);
-    bool back = glm::dot(hit->normal, ray.dir) > 0;
-    Shading sh{hit->point, back ? -hit->normal : hit->normal, ray.dir,
-               std::abs(glm::dot(hit->normal, ray.dir)), back,
-               std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape), hit->t};
+    Shading sh = shadingAt(ray, *hit,
+                           std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape));
     if (record) {
         record->firstLength = record->effectiveLength = hit->t;
         record->point = hit->point;

@@ -64,8 +64,8 @@ private:
                         const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
                          RayRecord* record, Spectrum* misEmission) const;
-    Spectrum shadeAsRoot(const Shading& sh, const Lobes& lobes, int surface, Context& ctx, RayRecord& rec,
-                         const dvec3& dir) const;
+    Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, int surface, double distance, Context& ctx,
+                              RayRecord& rec, const dvec3& dir) const;
     Spectrum shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
                    RayRecord* record, Spectrum* misEmission = nullptr) const;
     Spectrum sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,

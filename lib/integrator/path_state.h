@@ -13,6 +13,12 @@ constexpr int kRouletteDepth = 64;    // past this many reflections roulette pla
 constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this only bounds the stack
 
 inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
+
+// The hit as a material sees it: the normal turned toward the ray, and which side was hit.
+inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat) {
+    double along = glm::dot(hit.normal, ray.dir);
+    return Shading{hit.point, along > 0 ? -hit.normal : hit.normal, ray.dir, std::abs(along), along > 0, flat, hit.t};
+}
 }  // namespace integrator_detail
 
 // How the ray being traced was chosen, which decides how it counts the light sources it meets.
