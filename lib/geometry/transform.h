@@ -1,0 +1,40 @@
+// Radiance's transforms (the xf arguments of xform, instance, mesh and patterns): translations, rotations
+// about the axes, uniform scaling and mirroring, applied in the order given; `-i n` repeats the group of
+// transforms before the next `-i` n times.
+#pragma once
+#include <glm/mat4x4.hpp>
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "geometry/ray.h"
+
+namespace brume {
+
+struct Transform {
+    glm::dmat4 matrix{1.0};  // column vectors: p' = matrix · (p, 1)
+    double scale = 1;        // the uniform scale; negative when mirrored an odd number of times
+
+    dvec3 point(const dvec3& p) const { return dvec3(matrix * glm::dvec4(p, 1.0)); }
+    // Directions and offsets; their length is multiplied by |scale|.
+    dvec3 vector(const dvec3& v) const { return dvec3(matrix * glm::dvec4(v, 0.0)); }
+    bool mirrors() const { return scale < 0; }
+    Transform inverse() const { return {glm::inverse(matrix), 1 / scale}; }
+    // This transform followed by `next`.
+    Transform then(const Transform& next) const { return {next.matrix * matrix, scale * next.scale}; }
+};
+
+// Whether `arg` starts a transform: -t -s -i -rx -ry -rz -mx -my -mz.
+bool isTransformOption(std::string_view arg);
+
+struct ParsedTransform {
+    Transform transform;
+    size_t used = 0;  // arguments consumed: parsing stops at the first that is not part of a transform
+};
+
+// Reads transform arguments from the front of `args`, as Radiance does: an unknown option, a missing or
+// non-numeric value, or a zero scale ends the transform there.
+ParsedTransform parseTransform(std::span<const std::string> args);
+
+}  // namespace brume
