@@ -1,0 +1,252 @@
+#include "io/picture.h"
+
+#include <OpenEXR/ImfRgbaFile.h>
+#include <OpenEXR/ImfArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace brume {
+
+namespace {
+
+constexpr int kMinRunLength = 4;
+
+[[noreturn]] void bad(const std::string& name, const std::string& what) {
+    throw Error(name + ": " + what);
+}
+
+// Radiance's RGBE decoding: the mantissa's middle value times 2^(e−136) (Ward, Graphics Gems II).
+void decode(const unsigned char* c, float* rgb) {
+    if (c[3] == 0) {
+        rgb[0] = rgb[1] = rgb[2] = 0;
+        return;
+    }
+    double f = std::ldexp(1.0, int(c[3]) - 136);
+    for (int i = 0; i < 3; ++i) rgb[i] = float((c[i] + 0.5) * f);
+}
+
+void encode(const float* rgb, unsigned char* c) {
+    double d = std::max({rgb[0], rgb[1], rgb[2]});
+    if (!(d > 1e-32) || !std::isfinite(d)) {
+        std::memset(c, 0, 4);
+        return;
+    }
+    int e;
+    double f = std::frexp(d, &e) * 256.0 / d;
+    for (int i = 0; i < 3; ++i) c[i] = rgb[i] > 0 ? (unsigned char)(rgb[i] * f) : 0;
+    c[3] = (unsigned char)(e + 128);
+}
+
+int byte(std::istream& in, const std::string& name) {
+    int c = in.get();
+    if (c == EOF) bad(name, "truncated picture");
+    return c;
+}
+
+// One scanline of n RGBE pixels, in the new run-length encoding, the old one, or flat.
+void readScanline(std::istream& in, const std::string& name, std::vector<unsigned char>& line, int n) {
+    line.assign(size_t(n) * 4, 0);
+    unsigned char first[4];
+    for (auto& b : first) b = (unsigned char)byte(in, name);
+    if (n >= 8 && n < 0x8000 && first[0] == 2 && first[1] == 2 && !(first[2] & 0x80)) {
+        if ((first[2] << 8 | first[3]) != n) bad(name, "scanline length mismatch");
+        for (int component = 0; component < 4; ++component) {
+            for (int x = 0; x < n;) {
+                int count = byte(in, name);
+                bool run = count > 128;
+                if (run) count -= 128;
+                if (count == 0 || x + count > n) bad(name, "bad run length");
+                int value = run ? byte(in, name) : 0;
+                for (int k = 0; k < count; ++k, ++x) line[size_t(x) * 4 + component] = (unsigned char)(run ? value : byte(in, name));
+            }
+        }
+        return;
+    }
+    // Old encoding: (1,1,1,k) repeats the previous pixel k << shift times, consecutive repeats shifting by 8.
+    int shift = 0;
+    for (int x = 0; x < n;) {
+        unsigned char c[4];
+        if (x == 0) std::memcpy(c, first, 4);
+        else for (auto& b : c) b = (unsigned char)byte(in, name);
+        if (c[0] == 1 && c[1] == 1 && c[2] == 1) {
+            if (x == 0) bad(name, "repeat before first pixel");
+            long count = long(c[3]) << shift;
+            if (x + count > n) bad(name, "bad run length");
+            for (long k = 0; k < count; ++k, ++x) std::memcpy(&line[size_t(x) * 4], &line[size_t(x - 1) * 4], 4);
+            shift += 8;
+            continue;
+        }
+        std::memcpy(&line[size_t(x) * 4], c, 4);
+        ++x;
+        shift = 0;
+    }
+}
+
+// The resolution line: two of "±Y n" / "±X n"; the first is the slow axis.
+struct ScanOrder {
+    bool transposed = false;  // scanlines are columns
+    bool flipX = false, flipY = false;  // x runs right to left / first scanline is the bottom
+    int width = 0, height = 0;
+};
+
+ScanOrder readResolution(std::istream& in, const std::string& name) {
+    std::string line;
+    if (!std::getline(in, line)) bad(name, "missing resolution line");
+    std::istringstream s(line);
+    std::string a, b;
+    long na = 0, nb = 0;
+    if (!(s >> a >> na >> b >> nb) || a.size() != 2 || b.size() != 2 || na <= 0 || nb <= 0 || na > 1 << 20 ||
+        nb > 1 << 20 || a[1] == b[1] || (a[1] != 'X' && a[1] != 'Y') || (b[1] != 'X' && b[1] != 'Y') ||
+        (a[0] != '+' && a[0] != '-') || (b[0] != '+' && b[0] != '-'))
+        bad(name, "bad resolution line \"" + line + "\"");
+    ScanOrder o;
+    o.transposed = a[1] == 'X';
+    const std::string& x = o.transposed ? a : b;
+    const std::string& y = o.transposed ? b : a;
+    o.width = int(o.transposed ? na : nb);
+    o.height = int(o.transposed ? nb : na);
+    o.flipX = x[0] == '-';
+    o.flipY = y[0] == '+';
+    return o;
+}
+
+void readHeader(std::istream& in, const std::string& name, Picture& p) {
+    std::string line;
+    if (!std::getline(in, line) || line != "#?RADIANCE") bad(name, "not a Radiance picture");
+    bool formatSeen = false;
+    while (std::getline(in, line) && !line.empty()) {
+        if (line.rfind("FORMAT=", 0) == 0) {
+            std::string f = line.substr(7);
+            while (!f.empty() && std::isspace((unsigned char)f.back())) f.pop_back();
+            if (f != "32-bit_rle_rgbe" && f != "32-bit_rle_xyze") bad(name, "unsupported picture format " + f);
+            p.xyz = f == "32-bit_rle_xyze";
+            formatSeen = true;
+            continue;
+        }
+        if (line.rfind("EXPOSURE=", 0) == 0) p.exposure *= std::atof(line.c_str() + 9);
+        if (line.rfind("PIXASPECT=", 0) == 0) p.pixelAspect *= std::atof(line.c_str() + 10);
+        p.header.push_back(line);
+    }
+    if (!in) bad(name, "truncated header");
+    (void)formatSeen;  // Radiance assumes RGBE when FORMAT= is missing
+    if (!(p.pixelAspect > 0) || !(p.exposure > 0)) bad(name, "bad EXPOSURE= or PIXASPECT=");
+}
+
+Picture readOpenExr(const std::string& path) {
+    try {
+        Imf::RgbaInputFile file(path.c_str());
+        Imath::Box2i dw = file.dataWindow();
+        Picture p;
+        p.width = dw.max.x - dw.min.x + 1;
+        p.height = dw.max.y - dw.min.y + 1;
+        p.pixelAspect = 1 / file.pixelAspectRatio();
+        Imf::Array2D<Imf::Rgba> rgba(p.height, p.width);
+        file.setFrameBuffer(&rgba[0][0] - dw.min.x - dw.min.y * p.width, 1, p.width);
+        file.readPixels(dw.min.y, dw.max.y);
+        p.pixels.resize(size_t(p.width) * p.height * 3);
+        for (int y = 0; y < p.height; ++y)
+            for (int x = 0; x < p.width; ++x) {
+                float* o = p.at(x, y);
+                o[0] = rgba[y][x].r;
+                o[1] = rgba[y][x].g;
+                o[2] = rgba[y][x].b;
+            }
+        return p;
+    } catch (const std::exception& e) {
+        bad(path, e.what());
+    }
+}
+
+}  // namespace
+
+Picture readRadiancePicture(std::istream& in, const std::string& name) {
+    Picture p;
+    readHeader(in, name, p);
+    ScanOrder o = readResolution(in, name);
+    p.width = o.width;
+    p.height = o.height;
+    p.pixels.resize(size_t(p.width) * p.height * 3);
+    int lines = o.transposed ? o.width : o.height, length = o.transposed ? o.height : o.width;
+    std::vector<unsigned char> line;
+    for (int s = 0; s < lines; ++s) {
+        readScanline(in, name, line, length);
+        for (int k = 0; k < length; ++k) {
+            int x = o.transposed ? s : k, y = o.transposed ? k : s;
+            if (o.flipX) x = p.width - 1 - x;
+            if (o.flipY) y = p.height - 1 - y;
+            decode(&line[size_t(k) * 4], p.at(x, y));
+        }
+    }
+    return p;
+}
+
+Picture readPicture(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) bad(path, "cannot open picture");
+    char magic[4] = {};
+    in.read(magic, 4);
+    if (in.gcount() == 4 && (unsigned char)magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01)
+        return readOpenExr(path);
+    in.clear();
+    in.seekg(0);
+    return readRadiancePicture(in, path);
+}
+
+namespace {
+
+// The new run-length encoding of one component: runs of ≥ 4 equal bytes, literals in between.
+void writeComponent(std::ostream& out, const unsigned char* c, int n) {
+    int x = 0;
+    while (x < n) {
+        int run = 1;
+        while (x + run < n && run < 127 && c[4 * (x + run)] == c[4 * x]) ++run;
+        if (run >= kMinRunLength) {
+            out.put(char(128 + run));
+            out.put(char(c[4 * x]));
+            x += run;
+            continue;
+        }
+        int start = x, count = 0;
+        while (x < n && count < 128) {
+            int ahead = 1;
+            while (x + ahead < n && ahead < kMinRunLength && c[4 * (x + ahead)] == c[4 * x]) ++ahead;
+            if (ahead >= kMinRunLength) break;
+            ++x;
+            ++count;
+        }
+        out.put(char(count));
+        for (int k = start; k < start + count; ++k) out.put(char(c[4 * k]));
+    }
+}
+
+}  // namespace
+
+void writeRadiancePicture(std::ostream& out, const Picture& p) {
+    out << "#?RADIANCE\n";
+    for (const std::string& line : p.header) out << line << '\n';
+    out << "FORMAT=" << (p.xyz ? "32-bit_rle_xyze" : "32-bit_rle_rgbe") << "\n\n";
+    out << "-Y " << p.height << " +X " << p.width << '\n';
+    std::vector<unsigned char> line(size_t(p.width) * 4);
+    for (int y = 0; y < p.height; ++y) {
+        for (int x = 0; x < p.width; ++x) encode(p.at(x, y), &line[size_t(x) * 4]);
+        if (p.width < 8 || p.width >= 0x8000) {  // too short or long to run-length encode: flat
+            out.write(reinterpret_cast<const char*>(line.data()), std::streamsize(line.size()));
+            continue;
+        }
+        out.put(2);
+        out.put(2);
+        out.put(char(p.width >> 8));
+        out.put(char(p.width & 0xff));
+        for (int component = 0; component < 4; ++component) writeComponent(out, &line[size_t(component)], p.width);
+    }
+}
+
+}  // namespace brume

@@ -1,0 +1,115 @@
+#include "io/picture.h"
+
+#include <gtest/gtest.h>
+
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "util/error.h"
+
+using namespace brume;
+
+namespace {
+
+Picture gradient(int w, int h) {
+    Picture p;
+    p.width = w;
+    p.height = h;
+    p.pixels.resize(size_t(w) * h * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* c = p.at(x, y);
+            c[0] = float(x + 1);             // varies along rows: literals
+            c[1] = 0.5f;                      // constant: runs
+            c[2] = float(std::pow(10.0, y - 3));  // many exponents
+        }
+    return p;
+}
+
+Picture roundTrip(const Picture& p) {
+    std::stringstream s;
+    writeRadiancePicture(s, p);
+    return readRadiancePicture(s, "test");
+}
+
+}  // namespace
+
+// RGBE keeps 8 bits of mantissa: values come back within 1/256 of the largest component.
+TEST(Picture, RunLengthEncodedRoundTripKeepsValuesToEightBits) {
+    for (int w : {1, 7, 8, 9, 200, 300}) {
+        Picture p = gradient(w, 5), q = roundTrip(p);
+        ASSERT_EQ(q.width, w);
+        ASSERT_EQ(q.height, 5);
+        for (size_t i = 0; i < p.pixels.size(); i += 3)
+            for (int c = 0; c < 3; ++c) {
+                float big = std::max({p.pixels[i], p.pixels[i + 1], p.pixels[i + 2]});
+                EXPECT_NEAR(q.pixels[i + c], p.pixels[i + c], big / 128) << "width " << w << " at " << i;
+            }
+    }
+}
+
+// Radiance pictures may be stored bottom-up or column by column; pixels land where they are displayed.
+TEST(Picture, AnyScanOrderIsReadIntoDisplayOrder) {
+    // 2 × 3 picture (width 2): flat RGBE, with the byte 'k' marking the pixel at display position k.
+    auto pixel = [](int k) { return std::string{char(128), char(0), char(0), char(129 + k)}; };
+    struct Case {
+        const char* resolution;
+        int order[6];  // display index (y*2 + x) of each stored pixel
+    } cases[] = {{"-Y 3 +X 2", {0, 1, 2, 3, 4, 5}},
+                 {"+Y 3 +X 2", {4, 5, 2, 3, 0, 1}},
+                 {"-Y 3 -X 2", {1, 0, 3, 2, 5, 4}},
+                 {"+X 2 -Y 3", {0, 2, 4, 1, 3, 5}}};
+    for (const Case& c : cases) {
+        std::string text = std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n") + c.resolution + "\n";
+        for (int k : c.order) text += pixel(k);
+        std::istringstream in(text);
+        Picture p = readRadiancePicture(in, "test");
+        for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(p.at(k % 2, k / 2)[0], std::ldexp(128.5f, 129 + k - 136)) << c.resolution;
+    }
+}
+
+TEST(Picture, HeaderExposureAndAspectAreRead) {
+    Picture p = gradient(3, 2);
+    p.header = {"EXPOSURE=2", "PIXASPECT=1.5", "VIEW= -vtv"};
+    Picture q = roundTrip(p);
+    EXPECT_DOUBLE_EQ(q.exposure, 2);
+    EXPECT_DOUBLE_EQ(q.pixelAspect, 1.5);
+    EXPECT_EQ(q.header.size(), 3u);
+}
+
+TEST(Picture, TruncatedOrMalformedPicturesAreErrors) {
+    std::stringstream s;
+    writeRadiancePicture(s, gradient(50, 4));
+    std::string whole = s.str();
+    for (size_t cut : {size_t(5), size_t(20), whole.size() / 2, whole.size() - 1}) {
+        std::istringstream in(whole.substr(0, cut));
+        EXPECT_THROW(readRadiancePicture(in, "cut"), Error) << cut;
+    }
+    for (const char* text : {"P6\n", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 3\n",
+                             "#?RADIANCE\nFORMAT=Radiance_spectra\n\n-Y 1 +X 1\n\1\2\3\4",
+                             "#?RADIANCE\n\n-Y 2 -Y 3\n"}) {
+        std::istringstream in(text);
+        EXPECT_THROW(readRadiancePicture(in, "bad"), Error) << text;
+    }
+}
+
+TEST(Picture, OpenExrPicturesAreReadAsLinearRgb) {
+    std::string path = testing::TempDir() + "brume_picture_test.exr";
+    {
+        Imf::Rgba pixels[2 * 3];
+        for (int k = 0; k < 6; ++k) pixels[k] = Imf::Rgba(float(k), 0.25f, 2.0f, 1.0f);
+        Imf::RgbaOutputFile file(path.c_str(), 2, 3, Imf::WRITE_RGBA);
+        file.setFrameBuffer(pixels, 1, 2);
+        file.writePixels(3);
+    }
+    Picture p = readPicture(path);
+    std::remove(path.c_str());
+    ASSERT_EQ(p.width, 2);
+    ASSERT_EQ(p.height, 3);
+    EXPECT_FLOAT_EQ(p.at(1, 2)[0], 5);
+    EXPECT_FLOAT_EQ(p.at(0, 1)[1], 0.25f);
+    EXPECT_FLOAT_EQ(p.at(0, 0)[2], 2);
+}
