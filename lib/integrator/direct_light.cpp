@@ -54,9 +54,9 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, 
             bool controlled = closedForm >= 0 && cosL > 0;
             Spectrum f = response(sh, lobes, s->dir, lightDensity, !controlled);
             if (f.isBlack() && !controlled) continue;
-            Spectrum le = sourceRadiance(light, *s);
+            Spectrum le = sourceRadiance(light, *s, sh.point);
             Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
-                                             light, state);
+                                             light, state, ctx);
             if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
             sum += f * t * le * float(1 / lightDensity);
             if (controlled) {
@@ -105,14 +105,27 @@ Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3
     return f;
 }
 
-// The radiance a source sample sends, with Radiance's spotlight focus: a spotlight acts as if it were its
-// focal distance farther behind its surface.
-Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s) const {
+// The radiance a source sample sends toward `from`, with Radiance's spotlight focus (a spotlight acts as if
+// it were its focal distance farther behind its surface) and the source's pattern.
+Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s, const dvec3& from) const {
     const Emitter& e = light.emitter();
     Spectrum le = s.radiance;
-    if (e.kind == Emitter::Kind::Spotlight && std::isfinite(s.distance))
+    bool finite = std::isfinite(s.distance);
+    if (e.kind == Emitter::Kind::Spotlight && finite)
         le *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
+    if (light.patterned())
+        le *= sourcePattern(light, finite ? from + s.distance * s.dir : from, s.normal, s.dir,
+                            finite ? s.distance : kDistantSourceDistance);
     return le;
+}
+
+// The colour of a source's patterns where a ray in direction `dir` meets it (e.g. a luminaire's intensity
+// distribution from ies2rad, or a sky's luminance distribution).
+Spectrum Integrator::sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,
+                                   double distance) const {
+    PatternHit hit{point, dir, normal, distance};
+    int modifier = scene_.scene().objects[light.object()].modifier;
+    return scene_.modifiers().resolve(modifier, hit, patternEvaluator(), 0.5).texturing.color;
 }
 
 void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
@@ -158,11 +171,12 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int
                 PathState crossing = state;
                 SurfaceHit onMirror;
                 Spectrum t = transmittance(Ray{sh.point, d, std::numeric_limits<double>::infinity(), surface},
-                                           mirror.surface, false, e.kind, crossing, &onMirror);
+                                           mirror.surface, false, e.kind, crossing, ctx, &onMirror);
                 if (t.isBlack()) continue;
                 t *= shadowTransmittance(Ray{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface},
-                                         light, crossing);
-                if (!t.isBlack()) sum += f * sourceRadiance(light, *s) * mirror.reflectance * t * float(1 / (s->pdf * count));
+                                         light, crossing, ctx);
+                if (!t.isBlack())
+                    sum += f * sourceRadiance(light, *s, image) * mirror.reflectance * t * float(1 / (s->pdf * count));
             }
         }
     }
@@ -171,20 +185,21 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int
 
 // What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
 // clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
-Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state) const {
-    return transmittance(ray, light.surface(), light.isDistant(), light.emitter().kind, state, nullptr);
+Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const {
+    return transmittance(ray, light.surface(), light.isDistant(), light.emitter().kind, state, ctx, nullptr);
 }
 
 // Along a shadow ray to surface `target` (or, for a source at infinity, out of the scene): the
 // transmission of what it crosses, black if blocked. `reached` receives the hit on the target.
 Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
-                                   SurfaceHit* reached) const {
+                                   Context& ctx, SurfaceHit* reached) const {
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
         if (!hit) return toInfinity ? t : Spectrum(0.f);
-        int mat = scene_.materialObject(hit->surface);
-        bool cut = (state.clipCount > 0 && clipped(mat, state)) ||
+        Shading sh = shadingAt(ray, *hit, false);
+        int mat = shaderAt(ray, *hit, sh, ctx);
+        bool cut = mat < 0 || (state.clipCount > 0 && clipped(mat, state)) ||
                    crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
         if (cut) {
             ray.org = hit->point;
@@ -196,7 +211,6 @@ Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter
             return t;
         }
         const Emitter* e = scene_.emitter(mat);
-        Shading sh = shadingAt(ray, *hit, false);
         if (e && e->kind != Emitter::Kind::Illum) return Spectrum(0.f);  // another source blocks
         // An illum stands for the light coming through it: it hides other illums and glows behind it.
         if (e && !sh.backside && (targetKind == Emitter::Kind::Illum || targetKind == Emitter::Kind::Glow))

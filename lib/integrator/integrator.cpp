@@ -2,6 +2,7 @@
 // tracing, sources met by rays, Russian roulette. Next-event estimation is in direct_light.cpp.
 #include "integrator/integrator.h"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -15,6 +16,8 @@ using namespace integrator_detail;
 
 Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings) {
+    static std::atomic<uint64_t> instances{0};
+    id_ = ++instances;
     runSeed_ = settings.randomSampling
                    ? mixBits(static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()))
                    : settings.seed;
@@ -71,30 +74,35 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
     rec.point = org;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
-        int mat = hit ? scene_.materialObject(hit->surface) : -1;
+        Shading sh;
+        int mat = -1;
+        if (hit) {
+            sh = shadingAt(ray, *hit, false);
+            mat = shaderAt(ray, *hit, sh, ctx);
+        }
         if (hit && crossing == 0) {
             rec.firstLength = rec.effectiveLength = hit->t;
             rec.point = hit->point;
-            rec.normal = shadingAt(ray, *hit, false).normal;
+            rec.normal = sh.normal;
             rec.surfaceNormal = hit->normal;
             rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
             rec.modifierObject = mat;
         }
-        const Emitter* e = hit ? scene_.emitter(mat) : nullptr;
+        const Emitter* e = mat >= 0 ? scene_.emitter(mat) : nullptr;
         auto isTransparent = [&](int m) {
             const std::string& type = scene_.scene().objects[m].type;
             return type == "glass" || type == "trans" || type == "dielectric";
         };
         // An illum is seen as its alternate material, or not at all.
-        bool transparent = hit && (e && e->kind == Emitter::Kind::Illum ? e->alternate < 0 || isTransparent(e->alternate)
-                                                                         : isTransparent(mat));
+        bool transparent = hit && (mat < 0 || (e && e->kind == Emitter::Kind::Illum
+                                                   ? e->alternate < 0 || isTransparent(e->alternate)
+                                                   : isTransparent(mat)));
         if (!hit || (e && !transparent)) {
             rec.value = radiance(ray, PathState{}, ctx, nullptr, nullptr);
             return rec;
         }
         if (!transparent) {
-            dvec3 n = shadingAt(ray, *hit, false).normal;
-            rec.value = sensorIrradiance(hit->point, n, hit->surface, hit->t, ctx, rec, ray.dir);
+            rec.value = sensorIrradiance(hit->point, sh.normal, hit->surface, hit->t, ctx, rec, ray.dir);
             return rec;
         }
         ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
@@ -155,12 +163,13 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
     auto hit = scene_.geometry().intersect(ray);
     if (!hit) return escaped(ray, state, record, misEmission);
     const Surface& surface = scene_.geometry().surfaces()[hit->surface];
-    int mat = scene_.materialObject(hit->surface);
-    if (state.clipCount > 0 && clipped(mat, state)) return passThrough(ray, *hit, state, ctx, record, misEmission);
-    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, crossed))
-        return passThrough(ray, *hit, crossed, ctx, record, misEmission);
     Shading sh = shadingAt(ray, *hit,
                            std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape));
+    int mat = shaderAt(ray, *hit, sh, ctx);
+    if (mat < 0 || (state.clipCount > 0 && clipped(mat, state)))
+        return passThrough(ray, *hit, state, ctx, record, misEmission);
+    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, crossed))
+        return passThrough(ray, *hit, crossed, ctx, record, misEmission);
     if (record) {
         record->firstLength = record->effectiveLength = hit->t;
         record->point = hit->point;
@@ -173,6 +182,27 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
     Lobes lobes;
     if (!scene_.material(mat)->scatter(sh, lobes)) return passThrough(ray, *hit, state, ctx, record, misEmission);
     return shade(sh, lobes, hit->surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
+}
+
+// Each thread's state for evaluating patterns, made on first use for this integrator's scene.
+PatternEvaluator& Integrator::patternEvaluator() const {
+    thread_local std::unique_ptr<PatternEvaluator> evaluator;
+    thread_local uint64_t owner = 0;
+    if (owner != id_) {
+        evaluator = std::make_unique<PatternEvaluator>(scene_.modifiers());
+        owner = id_;
+    }
+    return *evaluator;
+}
+
+// What shades the hit: the surface's material, or what its patterns and mixtures make of it here (then
+// `sh` takes their colour and perturbed normal). -1: nothing, the ray goes on.
+int Integrator::shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Context& ctx) const {
+    if (!scene_.varies(hit.surface)) return scene_.materialObject(hit.surface);
+    Shader s = scene_.modifiers().resolve(scene_.surfaceModifier(hit.surface), patternHit(ray, hit), patternEvaluator(),
+                                          ctx.rng.uniform());
+    applyTexturing(sh, s.texturing);
+    return s.material;
 }
 
 Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
@@ -211,8 +241,11 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
             if ((e.kind == Emitter::Kind::Glow) != glows || !light.distantContains(ray.dir)) continue;
             if (e.kind == Emitter::Kind::Illum) {
                 if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
-                if (state.kind == PathState::Kind::Sampled)
-                    return sampledSourceShare(e.emitted(-ray.dir), li, state, ray, nullptr, misEmission);
+                if (state.kind == PathState::Kind::Sampled) {
+                    Spectrum le = e.emitted(-ray.dir);
+                    if (light.patterned()) le *= sourcePattern(light, ray.org, -ray.dir, ray.dir, kDistantSourceDistance);
+                    return sampledSourceShare(le, li, state, ray, nullptr, misEmission);
+                }
                 continue;
             }
             if (record) {  // a source at infinity: named, facing the ray, at no distance
@@ -221,6 +254,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
                 record->normal = record->surfaceNormal = -ray.dir;
             }
             Spectrum le = e.emitted(-ray.dir);
+            if (light.patterned()) le *= sourcePattern(light, ray.org, -ray.dir, ray.dir, kDistantSourceDistance);
             if (glows) return le;
             if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
             if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
@@ -238,7 +272,8 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
         // A sampled ray meeting a window's front finds light that next-event estimation counts (through the
         // mirror's image if a mirror sent it here).
         if (!sh.backside && li >= 0 && state.viaMirror >= 0) return Spectrum(0.f);
-        if (sampled && !sh.backside && li >= 0) return sampledSourceShare(e.emitted(-ray.dir), li, state, ray, &hit, misEmission);
+        if (sampled && !sh.backside && li >= 0)
+            return sampledSourceShare(e.emitted(-ray.dir) * sh.pattern, li, state, ray, &hit, misEmission);
         // Otherwise an illum is its alternate material, or nothing at all.
         if (e.alternate < 0) return passThrough(ray, hit, state, ctx, record, misEmission);
         Lobes lobes;
@@ -251,7 +286,7 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
         return passThrough(ray, hit, state, ctx, record, misEmission);
     }
     bool distantGlow = e.kind == Emitter::Kind::Glow && e.glowRadius >= 0 && hit.t > e.glowRadius;
-    Spectrum le = e.emitted(-ray.dir);
+    Spectrum le = e.emitted(-ray.dir) * sh.pattern;
     if (state.viaMirror >= 0 && li >= 0 && e.kind != Emitter::Kind::Glow) return Spectrum(0.f);  // via the image
     // -dv- hides sources from the rays that would see them, not the direct light sampled rays carry.
     if (!sampled) return settings_.directVisible || distantGlow ? le : Spectrum(0.f);

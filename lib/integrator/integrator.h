@@ -7,6 +7,7 @@
 
 #include "integrator/render_scene.h"
 #include "integrator/settings.h"
+#include "pattern/pattern_evaluator.h"
 #include "sampling/random.h"
 
 namespace brume {
@@ -77,13 +78,17 @@ private:
                               Context& ctx) const;
     Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
                       bool withDiffuse = true) const;
-    Spectrum sourceRadiance(const Light& light, const LightSample& s) const;
+    Spectrum sourceRadiance(const Light& light, const LightSample& s, const dvec3& from) const;
+    Spectrum sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,
+                           double distance) const;
+    int shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Context& ctx) const;
+    PatternEvaluator& patternEvaluator() const;
     void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
                          const Spectrum& value) const;
     bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
-    Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state) const;
+    Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const;
     Spectrum transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
-                           SurfaceHit* reached) const;
+                           Context& ctx, SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;
     bool crossesAntimatter(int material, bool backside, PathState& state) const;
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
@@ -98,6 +103,7 @@ private:
     const RenderScene& scene_;
     RenderSettings settings_;
     uint64_t runSeed_;
+    uint64_t id_;     // tells this integrator's per-thread pattern state from earlier integrators'
     double epsilon_;  // offset for sensor points off their surface, relative to the scene size
 };
 

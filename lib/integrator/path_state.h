@@ -11,6 +11,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kMaxCrossings = 64;     // surfaces a shadow ray may pass through
 constexpr int kRouletteDepth = 64;    // past this many reflections roulette plays whatever -lr says
 constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this only bounds the stack
+constexpr double kDistantSourceDistance = 1e10;  // T of rays meeting sources at infinity (Radiance's FHUGE)
 
 inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
 
@@ -18,6 +19,28 @@ inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b
 inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat) {
     double along = glm::dot(hit.normal, ray.dir);
     return Shading{hit.point, along > 0 ? -hit.normal : hit.normal, ray.dir, std::abs(along), along > 0, flat, hit.t};
+}
+
+// The hit as patterns see it.
+inline PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) { return PatternHit{hit.point, ray.dir, hit.normal, hit.t}; }
+
+// The patterns' colour, and the texture's perturbed normal as Radiance's raynormal makes it: kept on the
+// ray's side of the surface, its cosine at least 0.001.
+inline void applyTexturing(Shading& sh, const Texturing& t) {
+    sh.pattern = t.color;
+    if (glm::dot(t.perturbation, t.perturbation) <= 1e-12) return;
+    dvec3 n = sh.normal + (sh.backside ? -t.perturbation : t.perturbation);
+    double len = glm::length(n);
+    if (!(len > 0) || !std::isfinite(len)) return;  // Radiance: "illegal normal perturbation", unperturbed
+    n /= len;
+    double cosine = -glm::dot(n, sh.dir);
+    if (cosine <= 0) {
+        n += 2 * cosine * sh.dir;
+        cosine = -cosine;
+    }
+    sh.normal = n;
+    sh.cosine = std::max(cosine, 0.001);
+    sh.flat = false;
 }
 }  // namespace integrator_detail
 

@@ -8,6 +8,7 @@
 #include "geometry/scene_geometry.h"
 #include "light/light.h"
 #include "material/material.h"
+#include "pattern/modifier_chain.h"
 
 namespace brume {
 
@@ -28,8 +29,14 @@ public:
     const SceneGeometry& geometry() const { return *geometry_; }
     const std::vector<Light>& lights() const { return lights_; }
 
-    // The object that shades surface s: a material or an emitter (its modifier after aliases).
+    // The object that shades surface s: a material or an emitter, patterns skipped; -1 when a mixture
+    // decides at each hit, or when nothing does (a surface whose modifiers hold no material is invisible).
     int materialObject(int surface) const { return surfaceMaterial_[surface]; }
+    // Whether patterns, textures or mixtures modify surface s: then modifiers().resolve(surfaceModifier(s), …)
+    // at each hit says what shades it.
+    bool varies(int surface) const { return modifiers_->varies(surfaceModifier(surface)); }
+    int surfaceModifier(int surface) const { return scene_.objects[geometry_->surfaces()[surface].object].modifier; }
+    const ModifierChain& modifiers() const { return *modifiers_; }
     const Material* material(int object) const { return materials_[object].get(); }
     const Emitter* emitter(int object) const { return emitters_[object].get(); }
     // For an antimatter object: the modifiers whose surfaces it cuts away inside its volume (else nullptr).
@@ -51,6 +58,7 @@ private:
     void addMirrors();
 
     const Scene& scene_;
+    std::unique_ptr<ModifierChain> modifiers_;
     std::vector<std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Emitter>> emitters_;
     std::unique_ptr<SceneGeometry> geometry_;

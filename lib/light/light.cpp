@@ -22,8 +22,8 @@ double sphereOneMinusCos(double r, double d) {
 }
 }  // namespace
 
-Light::Light(const Surface& surface, int surfaceIndex, const Emitter* emitter)
-    : shape_(&surface.shape), surface_(surfaceIndex), object_(surface.object), emitter_(emitter) {
+Light::Light(const Surface& surface, int surfaceIndex, const Emitter* emitter, bool patterned)
+    : shape_(&surface.shape), surface_(surfaceIndex), object_(surface.object), emitter_(emitter), patterned_(patterned) {
     area_ = area(surface.shape);
     size_ = std::sqrt(area_);
     if (const auto* s = std::get_if<Sphere>(shape_)) center_ = s->center, size_ = 2 * s->radius;
@@ -41,8 +41,8 @@ Light::Light(const Surface& surface, int surfaceIndex, const Emitter* emitter)
     }
 }
 
-Light::Light(const dvec3& direction, double angle, const Emitter* emitter, int object)
-    : object_(object), emitter_(emitter), direction_(glm::normalize(direction)) {
+Light::Light(const dvec3& direction, double angle, const Emitter* emitter, int object, bool patterned)
+    : object_(object), emitter_(emitter), patterned_(patterned), direction_(glm::normalize(direction)) {
     double half = std::min(angle, 2 * kPi) / 2;
     // 2 sin²(θ/2) keeps the sun's tiny cone exact; 1 − cos θ keeps a hemisphere's edge exactly at 1.
     oneMinusCos_ = half < 0.5 ? 2 * std::sin(half / 2) * std::sin(half / 2) : 1 - std::cos(half);
@@ -100,7 +100,7 @@ std::optional<LightSample> Light::sampleArea(const dvec3& p, double u, double v)
     dvec3 dir = toLight / dist;
     double cosLight = -glm::dot(n, dir);
     if (cosLight <= 0) return std::nullopt;  // emitters radiate from their front only
-    return LightSample{dir, dist, dist * dist / (area_ * cosLight), emitter_->emitted(-dir)};
+    return LightSample{dir, dist, dist * dist / (area_ * cosLight), emitter_->emitted(-dir), n};
 }
 
 // Front-lit polygons with few triangles are sampled by solid angle: their spherical triangles from p.
@@ -130,7 +130,7 @@ std::optional<LightSample> Light::sampleSolidAngle(const LightView& view, double
     double dist = poly.planeDistance(Ray(view.point, dir));
     double cosLight = -glm::dot(poly.normal, dir);
     if (!(dist > 0) || cosLight <= 0) return std::nullopt;
-    return LightSample{dir, dist, 1 / view.solidAngle, emitter_->emitted(-dir)};
+    return LightSample{dir, dist, 1 / view.solidAngle, emitter_->emitted(-dir), poly.normal};
 }
 
 std::optional<LightSample> Light::sample(const LightView& view, double u, double v) const {
@@ -139,7 +139,7 @@ std::optional<LightSample> Light::sample(const LightView& view, double u, double
     if (isDistant()) {
         dvec3 dir = Frame(direction_).toWorld(uniformCone(u, v, oneMinusCos_));
         return LightSample{dir, std::numeric_limits<double>::infinity(), 1 / (2 * kPi * oneMinusCos_),
-                           emitter_->emitted(-dir)};
+                           emitter_->emitted(-dir), -dir};
     }
     const auto* sphere = std::get_if<Sphere>(shape_);
     if (!sphere) return sampleArea(p, u, v);
@@ -153,7 +153,8 @@ std::optional<LightSample> Light::sample(const LightView& view, double u, double
     double b = glm::dot(dir, toCenter);
     double h2 = std::max(0.0, sphere->radius * sphere->radius - (dc * dc - b * b));
     double dist = b - std::sqrt(h2);
-    return LightSample{dir, dist, 1 / (2 * kPi * omc), emitter_->emitted(-dir)};
+    return LightSample{dir, dist, 1 / (2 * kPi * omc), emitter_->emitted(-dir),
+                       glm::normalize(p + dist * dir - sphere->center)};
 }
 
 namespace {
@@ -193,7 +194,7 @@ double capIrradiance(double oneMinusCosAlpha, double cosBeta) {
 }  // namespace
 
 bool Light::hasClosedForm() const {
-    bool uniform = emitter_->kind == Emitter::Kind::Light || emitter_->kind == Emitter::Kind::Illum;
+    bool uniform = !patterned_ && (emitter_->kind == Emitter::Kind::Light || emitter_->kind == Emitter::Kind::Illum);
     return uniform && (isDistant() || std::holds_alternative<Polygon>(*shape_) || std::holds_alternative<Sphere>(*shape_));
 }
 

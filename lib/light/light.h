@@ -16,6 +16,7 @@ struct LightSample {
     double distance;  // to the sampled point (infinity for distant sources)
     double pdf;       // per unit solid angle
     Spectrum radiance;
+    dvec3 normal;     // the source's surface normal at the sampled point (−dir for distant sources)
 };
 
 // A source as seen from one shading point: what sampling it there needs, computed once for all its samples.
@@ -28,10 +29,11 @@ struct LightView {
 
 class Light {
 public:
-    // An emitting surface; `surface` is its index in SceneGeometry::surfaces().
-    Light(const Surface& surface, int surfaceIndex, const Emitter* emitter);
+    // An emitting surface; `surface` is its index in SceneGeometry::surfaces(). A patterned source's radiance
+    // varies over it and with direction: the integrator multiplies samples by its pattern.
+    Light(const Surface& surface, int surfaceIndex, const Emitter* emitter, bool patterned = false);
     // A source at infinity: unit direction and full cone angle in radians.
-    Light(const dvec3& direction, double angle, const Emitter* emitter, int object);
+    Light(const dvec3& direction, double angle, const Emitter* emitter, int object, bool patterned = false);
 
     // Radiance-like subdivision: more samples for a source large as seen from p (-ds ratio, ray weight).
     int sampleCount(const dvec3& p, double ratio, double weight) const;
@@ -49,6 +51,7 @@ public:
     double unoccludedIrradiance(const dvec3& p, const dvec3& n) const;
     // Uniform sources shaped as polygons, spheres or distant discs: unoccludedIrradiance may answer.
     bool hasClosedForm() const;
+    bool patterned() const { return patterned_; }
     bool isDistant() const { return surface_ < 0; }
     const dvec3& direction() const { return direction_; }  // of a distant source
     int surface() const { return surface_; }  // -1 for distant sources
@@ -66,6 +69,7 @@ private:
     int surface_ = -1;
     int object_ = -1;
     const Emitter* emitter_;
+    bool patterned_ = false;
     double area_ = 0;
     dvec3 center_{0};  // for the subdivision count
     double size_ = 0;

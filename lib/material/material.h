@@ -19,8 +19,11 @@ struct Shading {
     dvec3 dir;        // incoming ray direction (unit, away from the viewer)
     double cosine;    // −dir·normal, > 0
     bool backside;    // the ray hit the back of the surface as Radiance orients it
-    bool flat;        // polygon or ring
+    bool flat;        // polygon or ring, and no texture
     double distance;  // from the ray origin
+    // The patterns' colour: multiplies the material's colour (Radiance's pcol); for textured surfaces the
+    // normal above is already the perturbed one.
+    Spectrum pattern = Spectrum(1.f);
 };
 
 // A specular (Dirac) lobe: a single direction with a coefficient.

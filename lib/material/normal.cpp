@@ -36,21 +36,22 @@ bool NormalMaterial::scatter(const Shading& s, Lobes& lobes) const {
     double tspec = transmitted * transSpec_;
     double tdiff = transmitted - tspec;
     double rdiff = 1 - transmitted - rspec;
+    Spectrum color = color_ * s.pattern;
     Spectrum scolor{float(rspec)};
     if (kind_ == Kind::Metal) {
-        scolor = color_ * float(rspec);
+        scolor = color * float(rspec);
         if (fresnel > kTiny)
-            for (int i = 0; i < scolor.size(); ++i) scolor[i] = float(fresnel + color_[i] * spec_ * (1 - fresnel));
+            for (int i = 0; i < scolor.size(); ++i) scolor[i] = float(fresnel + color[i] * spec_ * (1 - fresnel));
     }
-    lobes.diffuse = color_ * float(rdiff);
-    lobes.diffuseTrans = color_ * float(tdiff);
+    lobes.diffuse = color * float(rdiff);
+    lobes.diffuseTrans = color * float(tdiff);
     lobes.ambient = lobes.diffuse;
     lobes.ambientTrans = lobes.diffuseTrans;
     if (pure()) {
         // Radiance reduces the diffuse part per source whenever the pure specular part is not negligible.
         lobes.fresnelDiffuse = rspec >= 0.017999;
         if (rspec > kTiny) lobes.addDelta(s.dir + 2 * s.cosine * s.normal, scolor, false);
-        if (tspec > kTiny) lobes.addDelta(s.dir, color_ * float(tspec), true);
+        if (tspec > kTiny) lobes.addDelta(s.dir, color * float(tspec), true);
         return true;
     }
     if (rspec > kTiny) {
@@ -60,10 +61,10 @@ bool NormalMaterial::scatter(const Shading& s, Lobes& lobes) const {
         if (!lobes.sampleGlossy) lobes.ambient += scolor;
     }
     if (tspec > kTiny) {
-        lobes.glossyTrans = color_ * float(tspec);
+        lobes.glossyTrans = color * float(tspec);
         lobes.alphaT2 = alpha2_;
         lobes.sampleGlossyTrans = tspec > settings_.specularThreshold + kTiny;
-        if (!lobes.sampleGlossyTrans) lobes.ambientTrans = color_ * float(transmitted);
+        if (!lobes.sampleGlossyTrans) lobes.ambientTrans = color * float(transmitted);
     }
     return true;
 }
@@ -73,7 +74,7 @@ Spectrum NormalMaterial::shadowTransmission(const Shading& s, dvec3& dir) const 
     if (kind_ != Kind::Trans || !pure()) return Spectrum(0.f);
     double fresnel;
     double rspec = specular(s.cosine, fresnel);
-    return color_ * float(trans_ * (1 - rspec) * transSpec_);
+    return color_ * s.pattern * float(trans_ * (1 - rspec) * transSpec_);
 }
 
 }  // namespace brume

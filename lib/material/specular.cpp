@@ -35,7 +35,7 @@ Mirror::Mirror(const SceneObject& o, const MaterialSettings& settings)
 
 bool Mirror::scatter(const Shading& s, Lobes& lobes) const {
     if (s.backside) return backVisible_;  // black from behind, or invisible
-    lobes.addDelta(s.dir + 2 * s.cosine * s.normal, color_, false);
+    lobes.addDelta(s.dir + 2 * s.cosine * s.normal, color_ * s.pattern, false);
     return true;
 }
 
@@ -69,7 +69,7 @@ bool Glass::scatter(const Shading& s, Lobes& lobes) const {
     if (s.backside && !backVisible_) return false;
     Spectrum reflect, transmit;
     coefficients(s.cosine, reflect, transmit);
-    lobes.addDelta(s.dir, transmit, true);
+    lobes.addDelta(s.dir, transmit * s.pattern, true);
     lobes.addDelta(s.dir + 2 * s.cosine * s.normal, reflect, false);
     return true;
 }
@@ -77,7 +77,7 @@ bool Glass::scatter(const Shading& s, Lobes& lobes) const {
 Spectrum Glass::shadowTransmission(const Shading& s, dvec3& dir) const {
     Spectrum reflect, transmit;
     coefficients(s.cosine, reflect, transmit);
-    return transmit;
+    return transmit * s.pattern;
 }
 
 Dielectric::Dielectric(const SceneObject& o) : color_(0.f) {
@@ -104,7 +104,7 @@ bool Dielectric::scatter(const Shading& s, Lobes& lobes) const {
     // A ray arriving from inside has crossed the medium: it lost color^distance on the way.
     if (s.backside)
         for (int i = 0; i < color_.size(); ++i)
-            lobes.incomingAttenuation[i] = float(std::pow(std::max<double>(color_[i], 0), s.distance));
+            lobes.incomingAttenuation[i] = float(std::pow(std::max<double>(color_[i] * s.pattern[i], 0), s.distance));
     dvec3 refractedDir;
     double ratio;
     bool refracted;
@@ -124,7 +124,8 @@ Spectrum Dielectric::shadowTransmission(const Shading& s, dvec3& dir) const {
     dir = refractedDir;
     Spectrum t(float((1 - r) * ratio * ratio));
     if (s.backside)
-        for (int i = 0; i < color_.size(); ++i) t[i] *= float(std::pow(std::max<double>(color_[i], 0), s.distance));
+        for (int i = 0; i < color_.size(); ++i)
+            t[i] *= float(std::pow(std::max<double>(color_[i] * s.pattern[i], 0), s.distance));
     return t;
 }
 

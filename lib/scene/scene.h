@@ -54,9 +54,11 @@ struct Scene {
     int add(SceneObject object);
     // The index of the latest modifier named `name`, or -1.
     int findModifier(const std::string& name) const;
+    // The modifier named `name` that object `object` refers to in its arguments (Radiance's lastmod): the
+    // latest one defined before it. -1 if there is none.
+    int modifierBefore(int object, const std::string& name) const;
 
 private:
-    int modifierBefore(int object, const std::string& name) const;
     bool sameDefinition(int a, int b) const;
 };
 

@@ -1,0 +1,61 @@
+// The modifiers between a surface and what shades it, walked as Radiance's rayshade and raytexture do:
+// from the surface's modifier through patterns and textures to a material (or emitter), then through the
+// material's own modifiers; a mixture picks one of two modifiers, or blends two chains of patterns.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "pattern/pattern.h"
+#include "scene/scene.h"
+
+namespace brume {
+
+// What shades a hit once its modifiers are applied.
+struct Shader {
+    int material = -1;  // a material or emitter object; -1: nothing, the ray goes on through
+    Texturing texturing;
+};
+
+class ModifierChain {
+public:
+    // Builds the pattern, texture and mixture objects of the scene (function files, data files and pictures
+    // loaded once). Throws Error (file:line) for bad arguments, unknown modifiers, a mixture of materials with
+    // a modifier of its own, or a material among a material's modifiers.
+    explicit ModifierChain(const Scene& scene);
+    ~ModifierChain();
+
+    // Whether the chain from `modifier` varies with the hit (a pattern, texture or mixture is on it).
+    bool varies(int modifier) const { return modifier >= 0 && nodes_[modifier].varies; }
+    // The material the chain from `modifier` ends in, patterns and textures skipped; -1 for void, or when a
+    // mixture decides at each hit.
+    int fixedMaterial(int modifier) const { return modifier >= 0 ? nodes_[modifier].fixedMaterial : -1; }
+
+    // Walks the chain from `modifier` at this hit. A mixture of materials takes its foreground with
+    // probability equal to its coefficient, drawn from u (uniform in [0, 1)).
+    Shader resolve(int modifier, const PatternHit& hit, PatternEvaluator& eval, double u) const;
+
+private:
+    enum class Kind { Material, Pattern, Mixture, Other };
+    struct Node {
+        Kind kind = Kind::Other;
+        bool varies = false;
+        bool reachesMaterial = false;
+        int fixedMaterial = -1;
+        std::unique_ptr<Pattern> pattern;
+        std::unique_ptr<Mixture> mixture;
+    };
+
+    void build(int object);
+    bool reachesMaterial(int m) const { return m >= 0 && nodes_[m].reachesMaterial; }
+    void walk(int modifier, const PatternHit& hit, PatternEvaluator& eval, double& u, Shader& s) const;
+    void applyPatterns(int modifier, const PatternHit& hit, PatternEvaluator& eval, Texturing& t) const;
+
+    const Scene& scene_;
+    std::vector<Node> nodes_;
+};
+
+// Whether objects of this type are patterns or textures (they modify a material) or mixtures.
+bool isPatternType(const std::string& type);
+bool isMixtureType(const std::string& type);
+
+}  // namespace brume
