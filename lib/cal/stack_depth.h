@@ -1,0 +1,28 @@
+// How far the stack has grown since a point: the bound that keeps deep recursion on hostile input (a
+// recursive .cal function, a long chain of definitions) an error rather than a crash.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace brume::cal {
+
+class StackDepth {
+public:
+    StackDepth() : base_(address()) {}
+    size_t bytes() const {
+        uintptr_t here = address();
+        return here > base_ ? here - base_ : base_ - here;
+    }
+
+private:
+    [[gnu::noinline]] static uintptr_t address() {
+        char here;
+        return reinterpret_cast<uintptr_t>(&here);
+    }
+    uintptr_t base_;
+};
+
+// The stack each of parsing, compiling and evaluating may use (threads have at least 2 MB).
+constexpr size_t kMaxStackBytes = 512 * 1024;
+
+}  // namespace brume::cal
