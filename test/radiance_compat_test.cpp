@@ -25,6 +25,7 @@ using namespace brume;
 namespace {
 
 const std::string kDir = std::string(BRUME_TEST_DATA) + "/radiance/";
+const std::string kPatternDir = std::string(BRUME_TEST_DATA) + "/patterns/";
 
 using Rgb = std::array<double, 3>;
 
@@ -34,8 +35,8 @@ struct LabelledRay {
 };
 
 // "label x y z dx dy dz" lines; '#' starts a comment line.
-std::vector<LabelledRay> readRays(const std::string& name) {
-    std::ifstream in(kDir + name);
+std::vector<LabelledRay> readRays(const std::string& name, const std::string& dir = kDir) {
+    std::ifstream in(dir + name);
     EXPECT_TRUE(in) << "cannot open " << name;
     std::vector<LabelledRay> rays;
     std::string line;
@@ -51,8 +52,8 @@ std::vector<LabelledRay> readRays(const std::string& name) {
 }
 
 // "label v1 v2 ..." lines: the values after the label (three, or six with standard errors).
-std::map<std::string, std::vector<double>> readReference(const std::string& name) {
-    std::ifstream in(kDir + name);
+std::map<std::string, std::vector<double>> readReference(const std::string& name, const std::string& dir = kDir) {
+    std::ifstream in(dir + name);
     EXPECT_TRUE(in) << "cannot open " << name;
     std::map<std::string, std::vector<double>> values;
     std::string line;
@@ -90,23 +91,27 @@ RenderSettings referenceSettings(double specularThreshold = 1) {
     return s;
 }
 
-// The scene, compiled once for all tests.
-struct Room {
-    Scene scene = loadScene({kDir + "materials.rad"});
-    RenderScene render{scene, MaterialSettings{}};
-};
+// The scenes, read once for all tests.
+const Scene& room() {
+    static const Scene scene = loadScene({kDir + "materials.rad"});
+    return scene;
+}
 
-const Room& room() {
-    static const Room r;
-    return r;
+// Its function files, data files and picture are found along RAYPATH, as Radiance finds them.
+const Scene& patternScene() {
+    static const Scene scene = [] {
+        setenv("RAYPATH", kPatternDir.c_str(), 1);
+        return loadScene({kPatternDir + "patterns.rad"});
+    }();
+    return scene;
 }
 
 // The mean of `runs` independent estimates of each ray (its value, or irradiance for sensors).
 enum class Mode { View, Sensor, IrradianceAtHit };  // rtrace, rtrace -I, rtrace -i
 
 std::vector<Rgb> brumeMeans(const std::vector<LabelledRay>& rays, Mode mode, int runs, const RenderSettings& s,
-                            std::vector<Rgb>* standardErrors = nullptr) {
-    RenderScene render(room().scene, s.materials);
+                            std::vector<Rgb>* standardErrors = nullptr, const Scene& scene = room()) {
+    RenderScene render(scene, s.materials);
     Integrator integrator(render, s);
     std::vector<Rgb> mean(rays.size()), sem(rays.size());
     tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
@@ -192,6 +197,18 @@ void expectAgreement(const char* rayFile, size_t atLeast, Mode mode, const char*
     ASSERT_GE(rays.size(), atLeast);
     auto brume = brumeMeans(rays, mode, kRuns, referenceSettings());
     Comparison c = compare(rays, brume, readReference(referenceFile), kPerRay);
+    EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
+    if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
+}
+
+// test/data/patterns: every pattern, texture and mixture type with .cal files (Brume's evaluator reading
+// files written for Radiance), data files and a picture, on floor panels under the sun, a patterned luminaire
+// and a patterned sky. Tolerances as above; there are no penumbrae at the rays, so the agreement is closer.
+TEST(RadianceCompat, PatternsTexturesAndMixturesAgreeWithRadiance) {
+    auto rays = readRays("rays.txt", kPatternDir);
+    ASSERT_GE(rays.size(), 110u);
+    auto brume = brumeMeans(rays, Mode::View, 8, referenceSettings(), nullptr, patternScene());
+    Comparison c = compare(rays, brume, readReference("reference.txt", kPatternDir), kPerRay);
     EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
     if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
 }

@@ -147,11 +147,23 @@ TEST_F(RtraceCli, SceneErrorsNameFileAndLineAndWriteNothing) {
 }
 
 TEST_F(RtraceCli, PlannedTypesAreRefusedByName) {
-    writeScene("pattern.rad", "void brightfunc b 2 f f.cal 0 0\nb plastic p 0 0 5 .5 .5 .5 0 0\n");
+    writeScene("medium.rad", "void mist m 0 0 0\nm sphere s 0 0 4 0 0 0 1\n");
+    Output r = rtrace("medium.rad", "");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("mist"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("medium.rad:1"), std::string::npos) << r.err;
+}
+
+// A pattern's missing function file or bad expression is reported where the pattern is defined.
+TEST_F(RtraceCli, PatternErrorsNameThePattern) {
+    writeScene("pattern.rad", "void brightfunc b 2 f missing.cal 0 0\nb plastic p 0 0 5 .5 .5 .5 0 0\n");
     Output r = rtrace("pattern.rad", "");
     EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("brightfunc"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("pattern.rad:1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("pattern.rad:1: cannot find function file \"missing.cal\""), std::string::npos) << r.err;
+    writeScene("syntax.rad", "void brightfunc b 2 f( . 0 0\nb plastic p 0 0 5 .5 .5 .5 0 0\n");
+    r = rtrace("syntax.rad", "");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("syntax.rad:1:"), std::string::npos) << r.err;
 }
 
 TEST_F(RtraceCli, UnknownOptionsAndMissingSceneAreErrors) {

@@ -165,23 +165,49 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
     const Surface& surface = scene_.geometry().surfaces()[hit->surface];
     Shading sh = shadingAt(ray, *hit,
                            std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape));
+    if (state.kind == PathState::Kind::Primary && scene_.varies(hit->surface))
+        return blendedHit(ray, *hit, sh, state, ctx, record, misEmission);
     int mat = shaderAt(ray, *hit, sh, ctx);
+    return shadeHit(ray, *hit, sh, mat, state, ctx, record, misEmission);
+}
+
+// A primary ray's value is the answer itself: where a mixture of materials covers the surface, both are
+// shaded and blended, as Radiance does, rather than one chosen at random. (Deeper rays choose.)
+Spectrum Integrator::blendedHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const PathState& state,
+                                Context& ctx, RayRecord* record, Spectrum* misEmission) const {
+    ModifierChain::Branches branches;
+    int n = scene_.modifiers().resolveAll(scene_.surfaceModifier(hit.surface), patternHit(ray, hit), patternEvaluator(),
+                                          branches);
+    int main = int(std::max_element(branches.share, branches.share + n) - branches.share);
+    Spectrum sum(0.f);
+    for (int k = 0; k < n; ++k) {
+        Shading textured = sh;
+        applyTexturing(textured, branches.shader[k].texturing);
+        sum += shadeHit(ray, hit, textured, branches.shader[k].material, state, ctx, k == main ? record : nullptr,
+                        misEmission) * float(branches.share[k]);
+    }
+    return sum;
+}
+
+// The value of a hit shaded by material (or emitter) `mat`; -1 and cut-away surfaces let the ray go on.
+Spectrum Integrator::shadeHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, int mat, const PathState& state,
+                              Context& ctx, RayRecord* record, Spectrum* misEmission) const {
     if (mat < 0 || (state.clipCount > 0 && clipped(mat, state)))
-        return passThrough(ray, *hit, state, ctx, record, misEmission);
-    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, crossed))
-        return passThrough(ray, *hit, crossed, ctx, record, misEmission);
+        return passThrough(ray, hit, state, ctx, record, misEmission);
+    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit.normal, ray.dir) > 0, crossed))
+        return passThrough(ray, hit, crossed, ctx, record, misEmission);
     if (record) {
-        record->firstLength = record->effectiveLength = hit->t;
-        record->point = hit->point;
+        record->firstLength = record->effectiveLength = hit.t;
+        record->point = hit.point;
         record->normal = sh.normal;
-        record->surfaceNormal = hit->normal;
-        record->surfaceObject = surface.object;
+        record->surfaceNormal = hit.normal;
+        record->surfaceObject = scene_.geometry().surfaces()[hit.surface].object;
         record->modifierObject = mat;
     }
-    if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, *hit, sh, *e, state, ctx, record, misEmission);
+    if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, hit, sh, *e, state, ctx, record, misEmission);
     Lobes lobes;
-    if (!scene_.material(mat)->scatter(sh, lobes)) return passThrough(ray, *hit, state, ctx, record, misEmission);
-    return shade(sh, lobes, hit->surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
+    if (!scene_.material(mat)->scatter(sh, lobes)) return passThrough(ray, hit, state, ctx, record, misEmission);
+    return shade(sh, lobes, hit.surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
 }
 
 // Each thread's state for evaluating patterns, made on first use for this integrator's scene.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pattern/pattern.h"
+#include "pattern/pattern_library.h"
 #include "scene/scene.h"
 
 namespace brume {
@@ -34,6 +35,21 @@ public:
     // probability equal to its coefficient, drawn from u (uniform in [0, 1)).
     Shader resolve(int modifier, const PatternHit& hit, PatternEvaluator& eval, double u) const;
 
+    // Every material the chain can end in here, with its share: mixtures of materials take both sides, as
+    // Radiance's raymixture does. For rays whose value is the answer itself (primary rays), not noise.
+    static constexpr int kMaxBranches = 8;
+    struct Branches {
+        Shader shader[kMaxBranches];
+        double share[kMaxBranches];
+        int count = 0;
+        double* u = nullptr;  // set: choose one side of each mixture with it instead
+
+        void add(const Shader& s, double w);
+    };
+    int resolveAll(int modifier, const PatternHit& hit, PatternEvaluator& eval, Branches& out) const;
+
+    const PatternLibrary& library() const { return *library_; }
+
 private:
     enum class Kind { Material, Pattern, Mixture, Other };
     struct Node {
@@ -47,10 +63,13 @@ private:
 
     void build(int object);
     bool reachesMaterial(int m) const { return m >= 0 && nodes_[m].reachesMaterial; }
-    void walk(int modifier, const PatternHit& hit, PatternEvaluator& eval, double& u, Shader& s) const;
+    double coefficient(const Node& n, const PatternHit& hit, PatternEvaluator& eval) const;
+    void walk(int modifier, const PatternHit& hit, PatternEvaluator& eval, Shader s, double share, Branches& out) const;
     void applyPatterns(int modifier, const PatternHit& hit, PatternEvaluator& eval, Texturing& t) const;
+    void blend(const Node& mixture, const PatternHit& hit, PatternEvaluator& eval, Texturing& t) const;
 
     const Scene& scene_;
+    std::unique_ptr<PatternLibrary> library_;
     std::vector<Node> nodes_;
 };
 

@@ -1,0 +1,48 @@
+#include "pattern/pattern_library.h"
+
+#include "scene/raypath.h"
+#include "util/error.h"
+
+namespace brume {
+
+PatternLibrary::PatternLibrary() : compiler_(std::make_unique<cal::Compiler>(library_)) {}
+
+PatternLibrary::~PatternLibrary() = default;
+
+cal::Scope PatternLibrary::load(const std::string& name, const SourceLocation& where) {
+    return library_.loadFile(name, where);
+}
+
+cal::ExprId PatternLibrary::expression(const std::string& text, const cal::Scope& scope, const SourceLocation& where) {
+    return compiler_->expression(text, scope, where);
+}
+
+cal::FuncId PatternLibrary::function(const std::string& name, int nargs, const cal::Scope& scope,
+                                     const SourceLocation& where) {
+    return compiler_->function(name, nargs, scope, where);
+}
+
+int PatternLibrary::parameters(const std::string& name, const cal::Scope& scope) const {
+    const cal::Definition* d = library_.find(name, scope);
+    return d ? int(d->params.size()) : 0;
+}
+
+const DataGrid& PatternLibrary::dataFile(const std::string& name) {
+    auto& grid = grids_["data:" + name];
+    if (!grid) grid = std::make_unique<DataGrid>(DataGrid::readDataFile(name));
+    return *grid;
+}
+
+const DataGrid& PatternLibrary::picture(const std::string& name) {
+    auto& grid = grids_["picture:" + name];
+    if (!grid) {
+        std::string path = findOnRayPath(name);
+        if (path.empty()) throw Error("cannot find picture file \"" + name + "\"");
+        grid = std::make_unique<DataGrid>(DataGrid::fromPicture(readPicture(path)));
+    }
+    return *grid;
+}
+
+void PatternLibrary::finish() { program_ = std::move(*compiler_).finish(); }
+
+}  // namespace brume
