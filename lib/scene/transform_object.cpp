@@ -18,27 +18,25 @@ enum class Rule {
 
 std::optional<Rule> ruleOf(std::string_view type) {
     using enum Rule;
-    static const std::unordered_map<std::string_view, Rule> rules = {
-        {"source", Source}, {"sphere", Sphere}, {"bubble", Sphere}, {"polygon", Polygon}, {"cone", Cone},
-        {"cup", Cone}, {"cylinder", Cylinder}, {"tube", Cylinder}, {"ring", Ring}, {"glow", Glow},
-        {"spotlight", Spotlight}, {"dielectric", Dielectric}, {"interface", Interface}, {"mist", Mist},
-        {"brighttext", Text}, {"colortext", Text}, {"mixtext", Text},
+    static const auto rules = [] {
+        std::unordered_map<std::string_view, Rule> r = {
+            {"source", Source}, {"sphere", Sphere}, {"bubble", Sphere}, {"polygon", Polygon}, {"cone", Cone},
+            {"cup", Cone}, {"cylinder", Cylinder}, {"tube", Cylinder}, {"ring", Ring}, {"glow", Glow},
+            {"spotlight", Spotlight}, {"dielectric", Dielectric}, {"interface", Interface}, {"mist", Mist},
+            {"brighttext", Text}, {"colortext", Text}, {"mixtext", Text}};
         // Octrees and meshes, and every type with functions: they take the transform with them.
-        {"instance", AppendTransform}, {"mesh", AppendTransform}, {"texfunc", AppendTransform},
-        {"texdata", AppendTransform}, {"plastic2", AppendTransform}, {"metal2", AppendTransform},
-        {"trans2", AppendTransform}, {"plasfunc", AppendTransform}, {"metfunc", AppendTransform},
-        {"transfunc", AppendTransform}, {"BRTDfunc", AppendTransform}, {"BSDF", AppendTransform},
-        {"aBSDF", AppendTransform}, {"WGMDfunc", AppendTransform}, {"plasdata", AppendTransform},
-        {"metdata", AppendTransform}, {"transdata", AppendTransform}, {"ashik2", AppendTransform},
-        {"prism1", AppendTransform}, {"prism2", AppendTransform}, {"brightfunc", AppendTransform},
-        {"colorfunc", AppendTransform}, {"brightdata", AppendTransform}, {"colordata", AppendTransform},
-        {"colorpict", AppendTransform}, {"mixfunc", AppendTransform}, {"mixdata", AppendTransform},
-        {"mixpict", AppendTransform}, {"specfunc", AppendTransform}, {"specdata", AppendTransform},
-        {"specpict", AppendTransform},
+        for (std::string_view t : {"instance", "mesh", "texfunc", "texdata", "plastic2", "metal2", "trans2",
+                                   "plasfunc", "metfunc", "transfunc", "BRTDfunc", "BSDF", "aBSDF", "WGMDfunc",
+                                   "plasdata", "metdata", "transdata", "ashik2", "prism1", "prism2", "brightfunc",
+                                   "colorfunc", "brightdata", "colordata", "colorpict", "mixfunc", "mixdata",
+                                   "mixpict", "specfunc", "specdata", "specpict"})
+            r[t] = AppendTransform;
         // Nothing in their arguments depends on position, orientation or size.
-        {"alias", Keep}, {"plastic", Keep}, {"metal", Keep}, {"glass", Keep}, {"trans", Keep}, {"light", Keep},
-        {"illum", Keep}, {"mirror", Keep}, {"antimatter", Keep}, {"spectrum", Keep}, {"specfile", Keep},
-    };
+        for (std::string_view t : {"alias", "plastic", "metal", "glass", "trans", "light", "illum", "mirror",
+                                   "antimatter", "spectrum", "specfile"})
+            r[t] = Keep;
+        return r;
+    }();
     auto it = rules.find(type);
     return it == rules.end() ? std::nullopt : std::optional(it->second);
 }
@@ -84,7 +82,8 @@ void scaleTransmittance(std::vector<double>& r, size_t i, double scale) {
     for (size_t k = i; k < i + 3; ++k) r[k] = std::pow(r[k], 1 / scale);
 }
 
-// Mist names the light sources it scatters, "a" or "a>b" (b seen through a); they are surfaces, renamed.
+// Mist names the light sources it scatters, "lamp" or "relay>lamp" (lamp relayed by a mirror or prism
+// surface); all are surfaces, renamed like them.
 std::string prefixedSources(const std::string& names, const std::string& prefix) {
     std::string out;
     for (size_t at = 0; at < names.size();) {

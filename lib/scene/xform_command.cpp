@@ -76,8 +76,10 @@ const std::vector<std::string>& XformExpansion::lines(const std::string& file) {
 void XformExpansion::argumentFile(const std::vector<std::string>& argv, size_t at, const Visit& visit) {
     if (at + 1 >= argv.size() || (argv[at + 1].size() > 1 && argv[at + 1][0] == '-'))
         throw Error("missing file for -f option");
+    const std::string& file = argv[at + 1];
+    if (!expanding_.insert(file).second) throw Error(SourceLocation{file}, "argument file names itself with -f");
     size_t k = 0;
-    for (const std::string& line : lines(argv[at + 1])) {
+    for (const std::string& line : lines(file)) {
         if (passedOn(line)) {
             visit({{}, line});
             continue;
@@ -93,6 +95,7 @@ void XformExpansion::argumentFile(const std::vector<std::string>& argv, size_t a
         forEachRun(args, visit);
         ++k;
     }
+    expanding_.erase(file);
 }
 
 // "-a n" becomes "-i k" for k = 0 .. n-1, each copy named "-n a<k>" (or with ".<k>" added to the -n names).

@@ -5,6 +5,7 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ public:
 
     // Calls `visit` with each run that `argv` stands for, in order. Argument files are read once and
     // remembered, so that a second pass sees the same runs. Throws Error on a missing -a count, or an
-    // argument file that cannot be read or holds no arguments.
+    // argument file that cannot be read, holds no arguments or names itself.
     void forEachRun(const std::vector<std::string>& argv, const Visit& visit);
     // Whether an argument file came from the standard input (-f -), which then holds no scene.
     bool readStandardInput() const { return files_.contains("-"); }
@@ -36,6 +37,7 @@ private:
     const std::vector<std::string>& lines(const std::string& file);
 
     std::map<std::string, std::vector<std::string>> files_;
+    std::set<std::string> expanding_;  // argument files being expanded, which a line may not name again
 };
 
 struct XformCommand {

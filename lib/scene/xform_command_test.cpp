@@ -58,7 +58,9 @@ TEST(XformCommand, MissingCountsAndFilesAreErrors) {
     EXPECT_THROW(runs({"xform", "-f", "/nonexistent/args"}), Error);
     std::string empty = argumentFile("# nothing but a comment\n\n");
     EXPECT_THROW(runs({"xform", "-f", empty}), Error);
-    std::filesystem::remove(empty);
+    std::string loop = argumentFile("-t 1 0 0\n-f " + empty + "\n");  // the same file, rewritten
+    EXPECT_THROW(runs({"xform", "-f", loop}), Error);
+    std::filesystem::remove(loop);
 }
 
 TEST(XformCommand, OptionsTransformAndFilesAreSeparated) {
