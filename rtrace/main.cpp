@@ -214,15 +214,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const Error& e) {
-        std::fflush(stdout);
-        std::cerr << programName() << ": " << e.what() << '\n';
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << programName() << ": system - " << e.what() << '\n';
-        return 2;
-    }
-}
+int main(int argc, char** argv) { return runProgram([&] { return run(argc, argv); }); }

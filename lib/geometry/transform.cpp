@@ -25,6 +25,18 @@ std::optional<double> number(std::span<const std::string> args, size_t i) {
 
 dvec3 axis(char c) { return dvec3(c == 'x', c == 'y', c == 'z'); }
 
+// Counter-clockwise about the axis looking down it, the cosines and sines placed as Radiance's xf() places
+// them: glm::rotate's general formula computes the diagonal as c + (1 - c), which can miss 1 by a bit and
+// then shows in xform's 12-digit output.
+glm::dmat4 rotation(char axisName, double radians) {
+    int u = axisName == 'x' ? 1 : axisName == 'y' ? 2 : 0, v = (u + 1) % 3;  // the plane turned: u to v
+    glm::dmat4 m(1.0);
+    m[u][u] = m[v][v] = std::cos(radians);
+    m[u][v] = std::sin(radians);
+    m[v][u] = -m[u][v];
+    return m;
+}
+
 // One transform option at args[i]: its matrix and scale, and how many arguments it takes; nullopt ends parsing.
 struct Step {
     glm::dmat4 matrix{1.0};
@@ -39,14 +51,14 @@ std::optional<Step> step(std::span<const std::string> args, size_t i) {
     case 't': {
         auto x = number(args, i + 1), y = number(args, i + 2), z = number(args, i + 3);
         if (!x || !y || !z) return std::nullopt;
-        s.matrix = glm::translate(glm::dmat4(1.0), dvec3(*x, *y, *z));
+        s.matrix[3] = glm::dvec4(*x, *y, *z, 1);
         s.used = 4;
         return s;
     }
     case 'r': {
         auto degrees = number(args, i + 1);
         if (!degrees) return std::nullopt;
-        s.matrix = glm::rotate(glm::dmat4(1.0), glm::radians(*degrees), axis(a[2]));
+        s.matrix = rotation(a[2], (M_PI / 180.) * *degrees);
         s.used = 2;
         return s;
     }

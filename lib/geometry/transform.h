@@ -16,9 +16,15 @@ struct Transform {
     glm::dmat4 matrix{1.0};  // column vectors: p' = matrix · (p, 1)
     double scale = 1;        // the uniform scale; negative when mirrored an odd number of times
 
-    dvec3 point(const dvec3& p) const { return dvec3(matrix * glm::dvec4(p, 1.0)); }
+    // Summed in the order of Radiance's multp3/multv3, so that xform's output matches Radiance's digit for
+    // digit (glm's matrix product rounds differently in the last bit).
+    dvec3 point(const dvec3& p) const { return vector(p) + dvec3(matrix[3]); }
     // Directions and offsets; their length is multiplied by |scale|.
-    dvec3 vector(const dvec3& v) const { return dvec3(matrix * glm::dvec4(v, 0.0)); }
+    dvec3 vector(const dvec3& v) const {
+        const glm::dmat4& m = matrix;
+        return {v.x * m[0][0] + v.y * m[1][0] + v.z * m[2][0], v.x * m[0][1] + v.y * m[1][1] + v.z * m[2][1],
+                v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]};
+    }
     bool mirrors() const { return scale < 0; }
     Transform inverse() const { return {glm::inverse(matrix), 1 / scale}; }
     // This transform followed by `next`.

@@ -3,6 +3,9 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
 
 #include "util/error.h"
 
@@ -17,9 +20,24 @@ std::string describeStatus(int status) {
     return "failed";
 }
 
+// Brume's own programs first on PATH: "!xform ..." and "!gensky ..." in a scene written for Radiance then
+// run the versions installed beside the running program. PATH is set once and inherited by the commands.
+void putOwnDirectoryFirstOnPath() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        std::error_code ec;
+        std::string own = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path().string();
+        const char* path = std::getenv("PATH");
+        std::string rest = path ? path : "/usr/local/bin:/usr/bin:/bin";  // the shell's default when unset
+        if (!ec && !own.empty() && rest != own && !rest.starts_with(own + ":"))
+            setenv("PATH", (own + ":" + rest).c_str(), 1);
+    });
+}
+
 }  // namespace
 
 std::string commandOutput(const std::string& command) {
+    putOwnDirectoryFirstOnPath();
     std::fflush(nullptr);  // so the command's output cannot overtake ours
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) throw Error("!" + command + ": cannot run command");

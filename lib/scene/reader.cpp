@@ -2,15 +2,13 @@
 
 #include <unistd.h>
 
-#include <cctype>
-#include <charconv>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "scene/command.h"
+#include "scene/object_text.h"
 #include "scene/raypath.h"
 #include "scene/tokenizer.h"
 
@@ -24,32 +22,10 @@ using Word = SceneTokenizer::Word;
 constexpr const char* kVoid = "void";
 constexpr const char* kInherit = "inherit";
 
-// Radiance's integer syntax (its isint): an optional sign and digits.
-bool isInteger(std::string_view s) {
-    if (s.starts_with('+') || s.starts_with('-')) s.remove_prefix(1);
-    return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
-}
-
-// Radiance's real syntax (its isflt): [sign] digits [. digits] [e [sign] digits], with at least one
-// digit before the exponent. This rejects "nan", "inf" and hexadecimal.
-bool isReal(std::string_view s) {
-    if (s.starts_with('+') || s.starts_with('-')) s.remove_prefix(1);
-    size_t digits = 0, i = 0;
-    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i) ++digits;
-    if (i < s.size() && s[i] == '.')
-        for (++i; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i) ++digits;
-    if (digits == 0) return false;
-    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) return isInteger(s.substr(i + 1));
-    return i == s.size();
-}
-
-// std::from_chars rejects the leading '+' that Radiance allows.
-std::string_view withoutPlus(std::string_view s) { return s.starts_with('+') ? s.substr(1) : s; }
-
 class SceneParser {
 public:
     SceneParser(Scene& scene, std::streambuf* in, std::string name, const ReadOptions& options)
-        : scene_(scene), tokens_(in, name), name_(std::move(name)), options_(options) {}
+        : scene_(scene), tokens_(in, name), words_(tokens_, name), name_(std::move(name)), options_(options) {}
 
     void parse() {
         size_t before = scene_.objects.size();
@@ -84,13 +60,13 @@ private:
     }
 
     void parseObject() {
-        Word modifier = word("modifier");
+        Word modifier = words_.word("modifier");
         int line = modifier.line;
         bool inherit = modifier.text == kInherit;
         int modifierIndex = inherit ? -1 : resolveModifier(modifier);
         SceneObject object;
-        object.type = word("object type").text;
-        object.name = word("identifier").text;
+        object.type = words_.word("object type").text;
+        object.name = words_.word("identifier").text;
         object.where = at(line);
         checkIdentifier(object);
         if (object.type == "alias") {
@@ -99,7 +75,7 @@ private:
         }
         if (inherit) throw Error(at(line), std::string("'") + kInherit + "' modifier outside an alias");
         object.modifier = modifierIndex;
-        parseArguments(object);
+        words_.readArguments(object);
         scene_.add(std::move(object));
     }
 
@@ -124,7 +100,7 @@ private:
     // "mod alias new old": `new` is a copy of the modifier `old`, with modifier `mod` unless that is
     // "inherit" (keep old's). Radiance resolves `old` when the alias is read, as done here.
     void addAlias(SceneObject alias, int modifierIndex, bool inherit) {
-        Word reference = word("alias reference");
+        Word reference = words_.word("alias reference");
         int target = scene_.findModifier(reference.text);
         if (target < 0) throw Error(at(reference.line), "alias of undefined modifier '" + reference.text + "'");
         SceneObject copy = scene_.objects[target];
@@ -134,52 +110,9 @@ private:
         scene_.add(std::move(copy));
     }
 
-    void parseArguments(SceneObject& object) {
-        for (size_t n = count("string"); n > 0; --n) object.strings.push_back(word("string argument").text);
-        for (size_t n = count("integer"); n > 0; --n) object.integers.push_back(integer(word("integer argument")));
-        for (size_t n = count("real"); n > 0; --n) object.reals.push_back(real(word("real argument")));
-    }
-
-    Error endOfFile(std::string_view expected) const {
-        return Error(at(tokens_.line()), "unexpected end of file, expected " + std::string(expected));
-    }
-
-    Word word(std::string_view what) {
-        std::optional<Word> next = tokens_.next();
-        if (!next) throw endOfFile(what);
-        return std::move(*next);
-    }
-
-    // The number of arguments of a kind ("string", "integer", "real") that follow.
-    size_t count(std::string_view kind) {
-        std::optional<Word> next = tokens_.next();
-        if (!next) throw endOfFile("number of " + std::string(kind) + " arguments");
-        const Word& w = *next;
-        if (!isInteger(w.text) || w.text.starts_with('-'))
-            throw Error(at(w.line), "bad number of " + std::string(kind) + " arguments '" + w.text + "'");
-        return static_cast<size_t>(integer(w));
-    }
-
-    long integer(const Word& w) const {
-        if (!isInteger(w.text)) throw Error(at(w.line), "bad integer '" + w.text + "'");
-        std::string_view s = withoutPlus(w.text);
-        long value = 0;
-        if (std::from_chars(s.data(), s.data() + s.size(), value).ec != std::errc())
-            throw Error(at(w.line), "integer out of range '" + w.text + "'");
-        return value;
-    }
-
-    double real(const Word& w) const {
-        if (!isReal(w.text)) throw Error(at(w.line), "bad real number '" + w.text + "'");
-        std::string_view s = withoutPlus(w.text);
-        double value = 0;
-        if (std::from_chars(s.data(), s.data() + s.size(), value).ec != std::errc() || !std::isfinite(value))
-            throw Error(at(w.line), "real number out of range '" + w.text + "'");
-        return value;
-    }
-
     Scene& scene_;
     SceneTokenizer tokens_;
+    ObjectWords words_;
     std::string name_;
     const ReadOptions& options_;
 };

@@ -1,5 +1,6 @@
 #include "util/error.h"
 
+#include <cstdio>
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -24,6 +25,20 @@ void setProgramName(const std::string& name) {
 }
 
 const std::string& programName() { return gProgram; }
+
+int runProgram(const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const Error& e) {
+        std::cout.flush();
+        std::fflush(stdout);
+        std::cerr << gProgram << ": " << e.what() << '\n';
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << gProgram << ": system - " << e.what() << '\n';
+        return 2;
+    }
+}
 
 void setWarningsEnabled(bool on) { gWarnings = on; }
 

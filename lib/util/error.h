@@ -1,5 +1,6 @@
 // Errors and warnings in Radiance's style: "program: file:line: what is wrong" on stderr.
 #pragma once
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +24,10 @@ public:
 // The program name printed before every message (set once by each tool's main).
 void setProgramName(const std::string& name);
 const std::string& programName();
+
+// A program's main: runs `body`, reporting a brume::Error as "program: message" (status 1) and any
+// other exception as "program: system - message" (status 2), after flushing what was written.
+int runProgram(const std::function<int()>& body);
 
 // Warnings go to stderr as "program: warning - what", unless disabled with -w-.
 void setWarningsEnabled(bool on);

@@ -1,18 +1,25 @@
 #include "util/header.h"
 
+#include <cctype>
 #include <ctime>
 
 namespace brume {
+
+std::string quotedWord(const std::string& w) {
+    bool quote = w.empty();
+    char q = '"';
+    for (size_t i = 0; i < w.size(); ++i) {
+        if (std::isspace(static_cast<unsigned char>(w[i]))) quote = true;
+        else if (i > 0 && i + 1 < w.size() && (w[i] == '"' || w[i] == '\'')) quote = true, q = w[i] == '"' ? '\'' : '"';
+    }
+    return quote ? q + w + q : w;
+}
 
 std::string commandLine(const std::vector<std::string>& words) {
     std::string line;
     for (const std::string& w : words) {
         if (!line.empty()) line += ' ';
-        bool quote = w.empty() || w.find_first_of(" \t\n") != std::string::npos;
-        char q = '"';
-        for (size_t i = 1; i + 1 < w.size(); ++i)
-            if (w[i] == '"' || w[i] == '\'') quote = true, q = w[i] == '"' ? '\'' : '"';
-        line += quote ? q + w + q : w;
+        line += quotedWord(w);
     }
     return line;
 }
