@@ -151,7 +151,7 @@ void printSky(const DaylitSky& sky, double solarTime, const SunAngles& sun, cons
 }
 
 // The solar time of a daylight time step, or none when the sun is down. With -i, measurements stand for
-// the interval ending at the time given, so a step around sunrise or sunset moves to the middle of its
+// the interval centred on the time given, so a step around sunrise or sunset moves to the middle of its
 // daylit part (gendaylit's correction).
 std::optional<double> daylightSolarTime(double st, int day, const Site& site, double interval, const LocalTime& t) {
     double rise = sunriseSolarTime(day, site), set = sunsetSolarTime(day, site), half = interval / 120;
