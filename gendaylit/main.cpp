@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <optional>
 
 #include "sky/daylit_sky.h"
@@ -34,7 +33,6 @@ struct Options {
     bool colour = false;  // -C
     Locus locus = kBerlinLocus;
     double interval = 0;  // -i, minutes
-    bool warnings = true;
 };
 
 void addInputOptions(OptionTable& t, DaylitRequest& sky) {
@@ -71,7 +69,7 @@ OptionTable makeTable(Options& o) {
         for (int i = 0; i < 7; ++i) o.locus[i < 4 ? i : i + 4] = float(toReal("-l", a[i]));
         std::copy_n(o.locus.begin(), 4, o.locus.begin() + 4);
     });
-    t.add("-w", 0, "no warnings", [&o](const auto&) { o.warnings = false; });
+    t.add("-w", 0, "no warnings", [](const auto&) { setWarningsEnabled(false); });
     t.add("-g", 1, "ground reflectance (default 0.2)", [&o](const auto& a) { o.sky.groundReflectance = toReal("-g", a[0]); });
     t.add("-i", 1, "time interval of the measurements (minutes)", [&o](const auto& a) {
         o.interval = toReal("-i", a[0]);
@@ -86,7 +84,7 @@ OptionTable makeTable(Options& o) {
     return t;
 }
 
-const char* kUsage =
+const std::string kUsage =
     "usage: gendaylit month day hour [-y year] -P|-W|-L|-G|-E values [options]\n"
     "   or: gendaylit -ang altitude azimuth -P|-W|-L|-G|-E values [options]\n"
     "   or: gendaylit -defaults\n";
@@ -154,7 +152,8 @@ void printSky(const DaylitSky& sky, double solarTime, const SunAngles& sun, cons
 // the interval centred on the time given, so a step around sunrise or sunset moves to the middle of its
 // daylit part (gendaylit's correction).
 std::optional<double> daylightSolarTime(double st, int day, const Site& site, double interval, const LocalTime& t) {
-    double rise = sunriseSolarTime(day, site), set = sunsetSolarTime(day, site), half = interval / 120;
+    // Half the interval in hours, in single precision as gendaylit has it.
+    double rise = sunriseSolarTime(day, site), set = sunsetSolarTime(day, site), half = float(interval) / 120.0f;
     char when[64];
     std::snprintf(when, sizeof when, " at time step %d %d %.3f", t.month, t.day, t.hour);
     if (std::abs(rise - st) <= half && interval > 0) st = (st + half + rise) / 2, warn(std::string("solar position corrected") + when);
@@ -167,39 +166,22 @@ std::optional<double> daylightSolarTime(double st, int day, const Site& site, do
 }
 
 int run(int argc, char** argv) {
-    setProgramName(argv[0]);
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.size() == 1 && args[0] == "-defaults") {
-        printDefaults();
-        return 0;
-    }
     Options o;
     OptionTable table = makeTable(o);
-    SkyWhen when;
-    try {
-        when = parseSkyCommand(args, table);
-        if (!when.fromAngles && (when.time.hour < 0 || when.time.hour >= 24)) throw Error("bad hour");
-    } catch (const Error& e) {
-        return usageError(e.what(), kUsage, table);
-    }
-    setWarningsEnabled(o.warnings);
-    when.time.year = o.year;
-    if (when.meridian) o.site.meridian = *when.meridian;
-    if (!when.fromAngles && !when.time.solar) warnIfFarFromMeridian(o.site);
-
+    std::optional<SkyWhen> when = parseSkyCommand({argv + 1, argv + argc}, table, kUsage, o.site, o.year);
+    if (!when) return printDefaults(), 0;
+    if (!when->fromAngles && (when->time.hour < 0 || when->time.hour >= 24))
+        throw UsageError("bad hour", kUsage + table.usage());
     printCommand(argc, argv);
-    SunAngles sun = when.angles;
+    SunAngles sun = when->angles;
     double solarTime = 0;  // gendaylit prints 0 with -ang
-    if (!when.fromAngles) {
-        SunDeclination d = sunDeclination(when.time, o.site);
-        int day = dayOfYear(when.time.month, when.time.day);
-        std::optional<double> st = daylightSolarTime(d.solarTime, day, o.site, o.interval, when.time);
+    if (!when->fromAngles) {
+        SunDeclination d = sunDeclination(when->time, o.site);
+        int day = dayOfYear(when->time.month, when->time.day);
+        std::optional<double> st = daylightSolarTime(d.solarTime, day, o.site, o.interval, when->time);
         solarTime = st.value_or(d.solarTime);
         sun = sunAngles(d.declination, solarTime, o.site);
-        if (!st) {
-            printErrorSky(solarTime, sun);
-            return 0;
-        }
+        if (!st) return printErrorSky(solarTime, sun), 0;
         o.sky.dayNumber = day;
     }
     if (!o.cloudy && sun.altitude > 87 * kDegree) {
@@ -210,20 +192,12 @@ int run(int argc, char** argv) {
     for (const std::string& line : sky.comments) std::puts(line.c_str());
     if (sky.error) printErrorSky(solarTime, sun);
     else printSky(sky, solarTime, sun, o);
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const Error& e) {
-        std::cerr << programName() << ": " << e.what() << '\n';
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << programName() << ": system - " << e.what() << '\n';
-        return 2;
-    }
+    setProgramName(argv[0]);
+    return runReportingErrors([&] { return run(argc, argv); });
 }

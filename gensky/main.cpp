@@ -1,7 +1,7 @@
 // gensky: a CIE sky (and sun) for a date, time and site, or for given sun angles, as Radiance's gensky
 // (see man/gensky.1).
 #include <cstdio>
-#include <iostream>
+#include <optional>
 
 #include "sky/cie_sky.h"
 #include "sky/sky_command.h"
@@ -45,7 +45,7 @@ OptionTable makeTable(Options& o) {
     return t;
 }
 
-const char* kUsage =
+const std::string kUsage =
     "usage: gensky month day time [options]\n"
     "   or: gensky -ang altitude azimuth [options]\n"
     "   or: gensky -defaults\n";
@@ -92,43 +92,21 @@ SunAngles sunPosition(const SkyWhen& when, const Options& o) {
 }
 
 int run(int argc, char** argv) {
-    setProgramName(argv[0]);
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.size() == 1 && args[0] == "-defaults") {
-        printDefaults();
-        return 0;
-    }
     Options o;
     OptionTable table = makeTable(o);
-    SkyWhen when;
-    try {
-        when = parseSkyCommand(args, table);
-    } catch (const Error& e) {
-        return usageError(e.what(), kUsage, table);
-    }
-    when.time.year = o.year;
-    if (when.meridian) o.site.meridian = *when.meridian;
+    std::optional<SkyWhen> when = parseSkyCommand({argv + 1, argv + argc}, table, kUsage, o.site, o.year);
+    if (!when) return printDefaults(), 0;
     if (o.year != 0 && (o.year < 1950 || o.year > 2050)) warn("year should be in range 1950-2050");
-    if (!when.fromAngles && !when.time.solar) warnIfFarFromMeridian(o.site);
-
-    std::vector<std::string> command{programName()};
-    command.insert(command.end(), args.begin(), args.end());
+    std::vector<std::string> command(argv, argv + argc);
+    command[0] = programName();
     std::printf("# %s\n", commandLine(command).c_str());
-    printSky(makeCieSky(o.sky, sunPosition(when, o)));
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
+    printSky(makeCieSky(o.sky, sunPosition(*when, o)));
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const Error& e) {
-        std::cerr << programName() << ": " << e.what() << '\n';
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << programName() << ": system - " << e.what() << '\n';
-        return 2;
-    }
+    setProgramName(argv[0]);
+    return runReportingErrors([&] { return run(argc, argv); });
 }

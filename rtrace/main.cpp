@@ -208,21 +208,11 @@ int run(int argc, char** argv) {
         if (flushEvery > 0) std::fflush(stdout);
     }
     if (reader.partial()) warn("partial ray at end of input ignored");
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const Error& e) {
-        std::fflush(stdout);
-        std::cerr << programName() << ": " << e.what() << '\n';
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << programName() << ": system - " << e.what() << '\n';
-        return 2;
-    }
+    return runReportingErrors([&] { return run(argc, argv); });
 }

@@ -3,7 +3,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 
 #include "util/error.h"
 
@@ -38,6 +37,14 @@ size_t skipDigits(const std::string& s, size_t i) {
     return i;
 }
 
+void warnIfFarFromMeridian(const Site& site) {
+    if (std::abs(site.meridian - site.longitude) <= 45 * kDegree) return;
+    char text[80];
+    std::snprintf(text, sizeof text, "%.1f hours btwn. standard meridian and longitude",
+                  (site.longitude - site.meridian) * 12 / kPi);
+    warn(text);
+}
+
 int toIntIn(const std::string& text, int low, int high, const std::string& what) {
     try {
         size_t used;
@@ -52,22 +59,19 @@ int toIntIn(const std::string& text, int low, int high, const std::string& what)
 
 ClockTime parseClockTime(const std::string& text) {
     ClockTime t;
-    size_t start = text.rfind('+', 0) == 0 ? 1 : 0;
-    t.solar = start == 1;
-    size_t i = skipDigits(text, start);
-    bool digits = i > start;
-    if (i < text.size() && text[i] == ':') {
-        size_t minutesEnd = skipDigits(text, i + 1);
-        t.hour = std::stoi(text.substr(start, i - start)) +
-                 (minutesEnd > i + 1 ? std::stoi(text.substr(i + 1, minutesEnd - i - 1)) : 0) / 60.0;
-        i = minutesEnd;
-    } else {
-        if (i < text.size() && text[i] == '.') i = skipDigits(text, i + 1), digits = digits || i > start + 1;
-        if (digits) t.hour = std::stod(text.substr(start, i - start));
-    }
-    if (!digits || (i < text.size() && (t.solar || !std::isalpha(static_cast<unsigned char>(text[i])))))
+    t.solar = text.rfind('+', 0) == 0;
+    size_t start = t.solar ? 1 : 0, hoursEnd = skipDigits(text, start), end = hoursEnd;
+    bool colon = end < text.size() && text[end] == ':';
+    if (colon || (end < text.size() && text[end] == '.')) end = skipDigits(text, end + 1);
+    std::string hours = text.substr(start, hoursEnd - start);
+    std::string rest = end > hoursEnd ? text.substr(hoursEnd + 1, end - hoursEnd - 1) : "";  // minutes or decimals
+    std::string zone = text.substr(end);
+    bool digits = !hours.empty() || (!colon && !rest.empty());
+    if (!digits || end - start > 12 || (!zone.empty() && (t.solar || !std::isalpha(static_cast<unsigned char>(zone[0])))))
         throw Error("bad time format: " + text);
-    if (i < text.size()) t.meridian = timeZoneMeridian(text.substr(i));
+    if (colon) t.hour = std::stod(hours) + (rest.empty() ? 0 : std::stod(rest)) / 60;
+    else t.hour = std::stod(text.substr(start, end - start));
+    if (!zone.empty()) t.meridian = timeZoneMeridian(zone);
     return t;
 }
 
@@ -99,25 +103,22 @@ void addSiteOptions(OptionTable& t, Site& site, int& year) {
           [&year](const std::vector<std::string>& a) { year = toInt("-y", a[0]); });
 }
 
-SkyWhen parseSkyCommand(const std::vector<std::string>& args, const OptionTable& table) {
-    SkyWhen when = parseWhen(args);
-    std::vector<std::string> options(args.begin() + 3, args.end());
-    size_t used = table.parse(options);
-    if (used < options.size()) throw Error("bad option " + options[used]);
+std::optional<SkyWhen> parseSkyCommand(const std::vector<std::string>& args, const OptionTable& table,
+                                       const std::string& usage, Site& site, const int& year) {
+    if (args.size() == 1 && args[0] == "-defaults") return std::nullopt;
+    SkyWhen when;
+    try {
+        when = parseWhen(args);
+        std::vector<std::string> options(args.begin() + 3, args.end());
+        size_t used = table.parse(options);
+        if (used < options.size()) throw Error("bad option " + options[used]);
+    } catch (const Error& e) {
+        throw UsageError(e.what(), usage + table.usage());
+    }
+    when.time.year = year;
+    if (when.meridian) site.meridian = *when.meridian;
+    if (!when.fromAngles && !when.time.solar) warnIfFarFromMeridian(site);
     return when;
-}
-
-int usageError(const std::string& what, const char* usage, const OptionTable& table) {
-    std::cerr << programName() << ": " << what << '\n' << usage << table.usage();
-    return 1;
-}
-
-void warnIfFarFromMeridian(const Site& site) {
-    if (std::abs(site.meridian - site.longitude) <= 45 * kDegree) return;
-    char text[80];
-    std::snprintf(text, sizeof text, "%.1f hours btwn. standard meridian and longitude",
-                  (site.longitude - site.meridian) * 12 / kPi);
-    warn(text);
 }
 
 void printSunPosition(double solarTime, double altitude, double azimuth) {

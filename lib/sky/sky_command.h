@@ -31,13 +31,12 @@ SkyWhen parseWhen(const std::vector<std::string>& words);
 // -a latitude, -o longitude, -m meridian (degrees, west positive) and -y year.
 void addSiteOptions(OptionTable& table, Site& site, int& year);
 
-// The when words, then the options of `table`; throws Error on anything else.
-SkyWhen parseSkyCommand(const std::vector<std::string>& args, const OptionTable& table);
-// Prints "program: what", the usage and the options to stderr; returns the exit status 1.
-int usageError(const std::string& what, const char* usage, const OptionTable& table);
-
-// gensky's and gendaylit's warning when the site is more than 3 hours from its standard meridian.
-void warnIfFarFromMeridian(const Site& site);
+// gensky's and gendaylit's command line (argv without the program): "-defaults" alone gives nothing;
+// otherwise the when words, then the options of `table`, which set `site` and `year`. The year goes into
+// the time and a time zone's meridian into `site`; a site more than 3 hours from its meridian is warned
+// about. Throws UsageError (with `usage` and the options) on a mistake.
+std::optional<SkyWhen> parseSkyCommand(const std::vector<std::string>& args, const OptionTable& table,
+                                       const std::string& usage, Site& site, const int& year);
 
 // "# Local solar time: ..." and "# Solar altitude and azimuth: ..." (degrees).
 void printSunPosition(double solarTime, double altitude, double azimuth);

@@ -41,9 +41,12 @@ SunDeclination michalsky(double n, const Site& site) {
     return {std::asin(std::sin(obliquity) * sinL), wrap(localSidereal - rightAscension * 12 / kPi + 12, 24)};
 }
 
-// Half the length of the day in hours: the hour angle at which the sun's centre crosses the horizon.
+// Half the length of the day in hours: the hour angle at which the sun's centre crosses the horizon,
+// acos(-tan(latitude) tan(declination)). The cosine is rounded to single precision and the angle taken
+// as gendaylit takes it, so that times corrected by -i match its output to the last printed digit.
 double halfDayHours(int day, const Site& site) {
-    return std::acos(-std::tan(site.latitude) * std::tan(iesDeclination(day))) * 12 / kPi;
+    float cosine = float(-std::tan(site.latitude) * std::tan(iesDeclination(day)));
+    return (kPi / 2 - std::atan2(cosine, std::sqrt(double(1 - cosine * cosine)))) * 180 / (kPi * 15);
 }
 
 }  // namespace

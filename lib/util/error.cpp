@@ -1,5 +1,6 @@
 #include "util/error.h"
 
+#include <cstdio>
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -17,6 +18,22 @@ std::string SourceLocation::str() const {
 }
 
 Error::Error(const SourceLocation& where, const std::string& what) : std::runtime_error(where.str() + ": " + what) {}
+
+int runReportingErrors(const std::function<int()>& run) {
+    try {
+        int status = run();
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
+        return status;
+    } catch (const Error& e) {
+        std::fflush(stdout);  // what was written before the error is kept
+        std::cerr << gProgram << ": " << e.what() << '\n';
+        if (auto* u = dynamic_cast<const UsageError*>(&e)) std::cerr << u->usage();
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << gProgram << ": system - " << e.what() << '\n';
+        return 2;
+    }
+}
 
 void setProgramName(const std::string& name) {
     auto slash = name.find_last_of('/');
