@@ -208,10 +208,11 @@ int run(int argc, char** argv) {
         if (flushEvery > 0) std::fflush(stdout);
     }
     if (reader.partial()) warn("partial ray at end of input ignored");
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
     return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return runProgram([&] { return run(argc, argv); }); }
+int main(int argc, char** argv) {
+    return runReportingErrors([&] { return run(argc, argv); });
+}

@@ -75,4 +75,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return runProgram([&] { return run(argc, argv); }); }
+int main(int argc, char** argv) { return runReportingErrors([&] { return run(argc, argv); }); }

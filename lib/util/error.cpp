@@ -19,26 +19,28 @@ std::string SourceLocation::str() const {
 
 Error::Error(const SourceLocation& where, const std::string& what) : std::runtime_error(where.str() + ": " + what) {}
 
-void setProgramName(const std::string& name) {
-    auto slash = name.find_last_of('/');
-    gProgram = slash == std::string::npos ? name : name.substr(slash + 1);
-}
-
-const std::string& programName() { return gProgram; }
-
-int runProgram(const std::function<int()>& body) {
+int runReportingErrors(const std::function<int()>& run) {
     try {
-        return body();
+        int status = run();
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("write error");
+        return status;
     } catch (const Error& e) {
-        std::cout.flush();
-        std::fflush(stdout);
+        std::fflush(stdout);  // what was written before the error is kept
         std::cerr << gProgram << ": " << e.what() << '\n';
+        if (auto* u = dynamic_cast<const UsageError*>(&e)) std::cerr << u->usage();
         return 1;
     } catch (const std::exception& e) {
         std::cerr << gProgram << ": system - " << e.what() << '\n';
         return 2;
     }
 }
+
+void setProgramName(const std::string& name) {
+    auto slash = name.find_last_of('/');
+    gProgram = slash == std::string::npos ? name : name.substr(slash + 1);
+}
+
+const std::string& programName() { return gProgram; }
 
 void setWarningsEnabled(bool on) { gWarnings = on; }
 

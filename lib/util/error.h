@@ -21,13 +21,24 @@ public:
     Error(const SourceLocation& where, const std::string& what);
 };
 
+// A mistake in the command line: reported as an Error, followed by the program's usage.
+class UsageError : public Error {
+public:
+    UsageError(const std::string& what, std::string usage) : Error(what), usage_(std::move(usage)) {}
+    const std::string& usage() const { return usage_; }
+
+private:
+    std::string usage_;
+};
+
+// The body of a tool's main: returns what `run` returns once the standard output is flushed; reports an
+// Error as "program: what" (and the usage after a UsageError) with status 1, any other exception (a
+// failed write among them) as "program: system - what" with status 2.
+int runReportingErrors(const std::function<int()>& run);
+
 // The program name printed before every message (set once by each tool's main).
 void setProgramName(const std::string& name);
 const std::string& programName();
-
-// A program's main: runs `body`, reporting a brume::Error as "program: message" (status 1) and any
-// other exception as "program: system - message" (status 2), after flushing what was written.
-int runProgram(const std::function<int()>& body);
 
 // Warnings go to stderr as "program: warning - what", unless disabled with -w-.
 void setWarningsEnabled(bool on);

@@ -54,7 +54,8 @@ const OptionTable::Option* OptionTable::find(const std::string& word) const {
 size_t OptionTable::parse(std::vector<std::string>& args) const {
     expandResponseFiles(args);
     size_t i = 0;
-    while (i < args.size() && args[i].size() > 1 && args[i][0] == '-') {
+    // Radiance's sky generators also take options that start with '+' (gensky +s); those must be declared.
+    while (i < args.size() && args[i].size() > 1 && (args[i][0] == '-' || (args[i][0] == '+' && find(args[i])))) {
         const std::string& word = args[i];
         const Option* o = find(word);
         if (!o) throw Error("unknown option " + word);

@@ -4,6 +4,7 @@
 //   -I+ -I- -I booleans take + - 1 0 y n t f, and a bare flag toggles, as in Radiance
 //   -ovd -faf  an option whose value is attached to its name
 //   @file      reads more arguments from a file (whitespace-separated, # comments, quotes allowed)
+//   +s         an option may be declared with a name starting with '+' (gensky +s, gendaylit +s)
 #pragma once
 #include <functional>
 #include <string>
