@@ -92,7 +92,7 @@ const std::string kUsage =
 void printDefaults() {
     Options o;
     printGroundDefault(o.sky.groundReflectance);
-    std::printf("-t %f\t\t\t# Atmospheric betaturbidity\n", 0.1);
+    std::printf("-t %f\t\t\t# Atmospheric betaturbidity\n", 0.1);  // listed, though gendaylit has no use for it
     printSiteDefaults(o.site);
 }
 

@@ -75,7 +75,7 @@ void printSky(const CieSky& sky) {
 }
 
 // The sun's position; for a date and time, also printed. Sunny skies keep the sun at least 3° from the
-// zenith, where skybright.cal's fits fail.
+// zenith, where the clear sky's zenith luminance, proportional to tan(altitude), grows without bound.
 SunAngles sunPosition(const SkyWhen& when, const Options& o) {
     SunAngles sun = when.angles;
     if (!when.fromAngles) {
