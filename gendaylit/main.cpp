@@ -70,7 +70,6 @@ OptionTable makeTable(Options& o) {
         std::copy_n(o.locus.begin(), 4, o.locus.begin() + 4);
     });
     t.add("-w", 0, "no warnings", [](const auto&) { setWarningsEnabled(false); });
-    t.add("-g", 1, "ground reflectance (default 0.2)", [&o](const auto& a) { o.sky.groundReflectance = toReal("-g", a[0]); });
     t.add("-i", 1, "time interval of the measurements (minutes)", [&o](const auto& a) {
         o.interval = toReal("-i", a[0]);
         if (o.interval < 0) throw Error("time interval negative");
@@ -80,7 +79,7 @@ OptionTable makeTable(Options& o) {
         if (dewPoint >= -40 && dewPoint <= 40) o.sky.dewPoint = dewPoint;
     });
     for (const char* name : {"-t", "-b", "-R"}) t.add(name, 1, "no effect (accepted as gendaylit accepts it)", [](const auto&) {});
-    addSiteOptions(t, o.site, o.year);
+    addSiteOptions(t, o.sky.groundReflectance, o.site, o.year);
     return t;
 }
 
@@ -89,11 +88,10 @@ const std::string kUsage =
     "   or: gendaylit -ang altitude azimuth -P|-W|-L|-G|-E values [options]\n"
     "   or: gendaylit -defaults\n";
 
+// Radiance's -defaults text; it lists a turbidity gendaylit has no use for.
 void printDefaults() {
     Options o;
-    printGroundDefault(o.sky.groundReflectance);
-    std::printf("-t %f\t\t\t# Atmospheric betaturbidity\n", 0.1);
-    printSiteDefaults(o.site);
+    printSiteDefaults(o.sky.groundReflectance, 0.1, "Atmospheric betaturbidity", o.site);
 }
 
 // Radiance's gendaylit echoes its arguments as given, without quoting.

@@ -39,9 +39,7 @@ OptionTable makeTable(Options& o) {
     t.add("-R", 1, "solar radiance from horizontal direct irradiance (W/m2)",
           given(o.sky.solar, GivenValue::Unit::Irradiance, "-R"));
     t.add("-t", 1, "turbidity (default 2.45)", [&o](const auto& a) { o.sky.turbidity = toReal("-t", a[0]); });
-    t.add("-g", 1, "ground reflectance (default 0.2)",
-          [&o](const auto& a) { o.sky.groundReflectance = toReal("-g", a[0]); });
-    addSiteOptions(t, o.site, o.year);
+    addSiteOptions(t, o.sky.groundReflectance, o.site, o.year);
     return t;
 }
 
@@ -54,9 +52,7 @@ const std::string kUsage =
 void printDefaults() {
     Options o;
     std::puts("+s\t\t\t\t# Sunny sky with sun");
-    printGroundDefault(o.sky.groundReflectance);
-    std::printf("-t %f\t\t\t# Atmospheric turbidity\n", o.sky.turbidity);
-    printSiteDefaults(o.site);
+    printSiteDefaults(o.sky.groundReflectance, o.sky.turbidity, "Atmospheric turbidity", o.site);
 }
 
 void printSky(const CieSky& sky) {
@@ -75,7 +71,7 @@ void printSky(const CieSky& sky) {
 }
 
 // The sun's position; for a date and time, also printed. Sunny skies keep the sun at least 3° from the
-// zenith, where skybright.cal's fits fail.
+// zenith, where the clear sky's zenith luminance, proportional to tan(altitude), grows without bound.
 SunAngles sunPosition(const SkyWhen& when, const Options& o) {
     SunAngles sun = when.angles;
     if (!when.fromAngles) {

@@ -79,6 +79,8 @@ void expectSameSceneText(const std::string& brume, const std::string& radiance, 
 // this machine it is byte for byte the same for all of them; the test allows one unit of the last digit
 // so that another libm's rounding does not fail it).
 TEST(SkyCli, OutputMatchesRadianceToPrintedPrecision) {
+    // Brume's programs must be there: otherwise PATH would find another gensky, Radiance's perhaps.
+    for (const char* program : {"gensky", "gendaylit"}) ASSERT_TRUE(fs::exists(fs::path(BRUME_BIN_DIR) / program)) << program;
     std::ifstream commands(std::string(BRUME_TEST_DATA) + "/sky/commands.txt");
     std::string line;
     int n = 0;

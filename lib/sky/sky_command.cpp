@@ -92,7 +92,9 @@ SkyWhen parseWhen(const std::vector<std::string>& words) {
     return w;
 }
 
-void addSiteOptions(OptionTable& t, Site& site, int& year) {
+void addSiteOptions(OptionTable& t, double& groundReflectance, Site& site, int& year) {
+    t.add("-g", 1, "ground reflectance (default 0.2)",
+          [&groundReflectance](const std::vector<std::string>& a) { groundReflectance = toReal("-g", a[0]); });
     auto angle = [](double& to, const char* name) {
         return [&to, name](const std::vector<std::string>& a) { to = toReal(name, a[0]) * kDegree; };
     };
@@ -131,13 +133,11 @@ void printSolarSource(const std::string& radiance, const glm::dvec3& d, const st
     std::printf("\nsolar source sun\n0\n0\n4 %f %f %f %s\n", d.x, d.y, d.z, diameter.c_str());
 }
 
-void printGroundDefault(double reflectance) {
-    std::printf("-g %f\t\t\t# Ground plane reflectance\n", reflectance);
-}
-
 double degrees(double radians) { return 180 / kPi * radians; }
 
-void printSiteDefaults(const Site& site) {
+void printSiteDefaults(double reflectance, double turbidity, const char* turbidityLabel, const Site& site) {
+    std::printf("-g %f\t\t\t# Ground plane reflectance\n", reflectance);
+    std::printf("-t %f\t\t\t# %s\n", turbidity, turbidityLabel);
     std::printf("-a %f\t\t\t# Site latitude (degrees)\n", degrees(site.latitude));
     std::printf("-o %f\t\t\t# Site longitude (degrees)\n", degrees(site.longitude));
     std::printf("-m %f\t\t\t# Standard meridian (degrees)\n", degrees(site.meridian));

@@ -28,8 +28,8 @@ struct SkyWhen {
 };
 SkyWhen parseWhen(const std::vector<std::string>& words);
 
-// -a latitude, -o longitude, -m meridian (degrees, west positive) and -y year.
-void addSiteOptions(OptionTable& table, Site& site, int& year);
+// -g ground reflectance, -a latitude, -o longitude, -m meridian (degrees, west positive) and -y year.
+void addSiteOptions(OptionTable& table, double& groundReflectance, Site& site, int& year);
 
 // gensky's and gendaylit's command line (argv without the program): "-defaults" alone gives nothing;
 // otherwise the when words, then the options of `table`, which set `site` and `year`. The year goes into
@@ -40,14 +40,13 @@ std::optional<SkyWhen> parseSkyCommand(const std::vector<std::string>& args, con
 
 // "# Local solar time: ..." and "# Solar altitude and azimuth: ..." (degrees).
 void printSunPosition(double solarTime, double altitude, double azimuth);
-// Degrees as gensky computes them, 180/π × x. gendaylit computes x × 180 / π, which rounds some ties
-// the other way (29.65° given prints as 29.7 in gensky, 29.6 in gendaylit... and back): each program
-// converts as Radiance's does.
+// Degrees as gensky computes them, 180/π × x. gendaylit computes x × 180 / π, which differs in the last
+// bit for some angles and so prints some halves the other way (-ang -2.75: -2.7 in gendaylit, -2.8
+// by this): each program converts as Radiance's does.
 double degrees(double radians);
 // The sun as a `light` material and a `source` of the given diameter (degrees, as printed).
 void printSolarSource(const std::string& radiance, const glm::dvec3& direction, const std::string& diameter);
-// The -defaults lines for ground reflectance, latitude, longitude and meridian.
-void printGroundDefault(double reflectance);
-void printSiteDefaults(const Site& site);
+// The -defaults lines for ground reflectance, turbidity (with its label), latitude, longitude, meridian.
+void printSiteDefaults(double reflectance, double turbidity, const char* turbidityLabel, const Site& site);
 
 }  // namespace brume
