@@ -1,0 +1,38 @@
+// For the cal unit tests: compile and evaluate expressions in one call.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cal/compiler.h"
+#include "cal/evaluator.h"
+
+namespace brume::cal::testing {
+
+// A Library plus the channels and pattern arguments to evaluate with.
+struct Calc {
+    Library library;
+    Channels channels{};
+    std::vector<double> args;
+
+    // The value of `expr` as seen from `scope`, compiled afresh with the library as it is now.
+    double operator()(const std::string& expr, const Scope& scope = {}) {
+        Compiler compiler(library);
+        ExprId e = compiler.expression(expr, scope, {"test", 1});
+        Program program = std::move(compiler).finish();
+        Evaluator evaluator(program);
+        evaluator.begin(channels, args);
+        return evaluator(e);
+    }
+
+    // The message of the brume::Error compiling or evaluating `expr` throws, or "no error".
+    std::string error(const std::string& expr, const Scope& scope = {}) {
+        try {
+            (*this)(expr, scope);
+        } catch (const Error& e) {
+            return e.what();
+        }
+        return "no error";
+    }
+};
+
+}  // namespace brume::cal::testing
