@@ -155,15 +155,17 @@ uint32_t Compiler::chain(const Expr& e, const Site& site) {
     return kids.size() == 1 ? kids[0] : add(op, kids);
 }
 
-// A variable: its memo slot, or, when its definition is a constant or a channel, that.
+// A variable: its memo slot, or its definition itself when that is as cheap as a memo look-up (a
+// constant, a channel, a real argument such as A1 = arg(1)).
 uint32_t Compiler::variableNode(const Definition& d) {
     if (auto it = variables_.find(&d); it != variables_.end()) return it->second;  // done, or in a cycle
     uint32_t var = add(Node{.op = Op::Var, .ref = static_cast<uint32_t>(program_.variables.size())});
     program_.variables.push_back(d.name);
     variables_[&d] = var;
     uint32_t body = compile(d.body, Site{d.context, nullptr, d.where.file});
-    Op op = program_.nodes[body].op;
-    if (op == Op::Const || op == Op::Channel) {
+    const Node& b = program_.nodes[body];
+    Op op = b.op;
+    if (op == Op::Const || op == Op::Channel || (op == Op::Arg && isConst(program_.kids[b.kids]))) {
         program_.nodes[var] = program_.nodes[body];
     } else {
         program_.nodes[var].kids = static_cast<uint32_t>(program_.kids.size());

@@ -100,7 +100,7 @@ double Evaluator::variable(const Node& n) {
     if (stamps_[n.ref] == epoch_) return values_[n.ref];
     const std::string& name = program_.variables[n.ref];
     if (stamps_[n.ref] == ~epoch_) throw Error(name + ": defined in terms of itself");
-    checkStack(name);
+    if (stack_.bytes() > kMaxStackBytes) throw Error(name + ": definitions nested too deeply");
     stamps_[n.ref] = ~epoch_;
     double v = eval(program_.kids[n.kids], nullptr);
     values_[n.ref] = v;
@@ -121,7 +121,7 @@ double Evaluator::param(uint32_t index, const Frame* frame) {
 
 double Evaluator::call(uint32_t function, const uint32_t* args, uint32_t count, const Frame* frame) {
     const Program::Function& f = program_.functions[function];
-    checkStack(f.name + "()");
+    if (stack_.bytes() > kMaxStackBytes) throw Error(f.name + "(): recursion too deep");
     Frame callee{args, count, frame};
     return eval(f.body, &callee);
 }
@@ -220,8 +220,5 @@ double Evaluator::constantValue(uint32_t node) {
     return v;
 }
 
-void Evaluator::checkStack(const std::string& what) const {
-    if (stack_.bytes() > kMaxStackBytes) throw Error(what + ": recursion too deep");
-}
 
 }  // namespace brume::cal

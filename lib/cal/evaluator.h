@@ -54,7 +54,6 @@ private:
     // For the Compiler: the value of a constant node; FoldFailure if it has a math error.
     double constantValue(uint32_t node);
     double mathError(const char* what);
-    void checkStack(const std::string& what) const;
 
     const Program& program_;
     RayInput ray_;
