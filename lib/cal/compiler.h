@@ -37,6 +37,11 @@ private:
         const std::string& file;
     };
 
+    // Compiles an entry's root; if that fails, undoes everything it added.
+    template <class F>
+    uint32_t transaction(F&& compileRoot);
+    uint32_t functionRoot(std::string_view name, int nargs, const Scope& scope, const std::string& label);
+    uint32_t addEntry(uint32_t root, uint32_t params, std::string label);
     uint32_t compile(const Expr& e, const Site& site);
     uint32_t compileArgument(const Expr& e, const Site& site);
     uint32_t name(const Expr& e, const Site& site, bool functionAllowed);

@@ -4,6 +4,7 @@
 
 #include <numbers>
 
+#include "cal/evaluator.h"
 #include "cal/testing.h"
 
 namespace brume::cal {
@@ -58,26 +59,22 @@ TEST(CalCompiler, NamesBindWhenCompiledNotWhenDefined) {
 }
 
 TEST(CalCompiler, ALaterDefinitionReplacesAnEarlierOne) {
-    Calc calc;
-    calc.library.loadText("x : 1; f(a) = a; x = 2; f(a, b) = a + b;", "t.cal");
+    Calc calc("x : 1; f(a) = a; x = 2; f(a, b) = a + b;");
     EXPECT_EQ(calc("x + f(1, 2)"), 5);
 }
 
 TEST(CalCompiler, AVariableMayShareItsNameWithABuiltIn) {
-    Calc calc;
-    calc.library.loadText("max = 3;", "t.cal");
+    Calc calc("max = 3;");
     EXPECT_EQ(calc("max(1, max)"), 3);
 }
 
 TEST(CalCompiler, ExtraArgumentsAreIgnoredAsInRadiance) {
-    Calc calc;
-    calc.library.loadText("f(x) = x;", "t.cal");
+    Calc calc("f(x) = x;");
     EXPECT_EQ(calc("f(1, undefined_name) + sqrt(4, 5)"), 3);
 }
 
 TEST(CalCompiler, ErrorsNameTheNameAndWhereItIsUsed) {
-    Calc calc;
-    calc.library.loadText("a = 1;\nb = a + nothing;\nf(x, y) = x;\nc = f(1);\nd = g(2);", "t.cal");
+    Calc calc("a = 1;\nb = a + nothing;\nf(x, y) = x;\nc = f(1);\nd = g(2);");
     EXPECT_EQ(calc.error("b"), "t.cal:2: undefined variable 'nothing'");
     EXPECT_EQ(calc.error("c"), "t.cal:4: f(): 2 arguments expected");
     EXPECT_EQ(calc.error("d"), "t.cal:5: undefined function 'g'");
@@ -85,6 +82,23 @@ TEST(CalCompiler, ErrorsNameTheNameAndWhereItIsUsed) {
     EXPECT_EQ(calc.error("sqrt"), "test:1: undefined variable 'sqrt'");
     EXPECT_EQ(calc.error("atan2(1)"), "test:1: atan2(): 2 arguments expected");
     EXPECT_EQ(calc.error("$0 + $99"), "test:1: illegal channel number $0");
+}
+
+TEST(CalCompiler, AFailedCompileLeavesNothingHalfDone) {
+    Library library;
+    library.loadText("n = nothing; m = n + 1; s(x) = r(x - 1); r(x) = if(x, s(x), undefined); ok = 2;", "t.cal");
+    Compiler compiler(library);
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        EXPECT_THROW(compiler.expression("m", {}, {}), Error);
+        EXPECT_THROW(compiler.expression("n", {}, {}), Error);
+        EXPECT_THROW(compiler.expression("s(1)", {}, {}), Error);
+    }
+    ExprId ok = compiler.expression("ok + Dx", {}, {});
+    Program program = std::move(compiler).finish();
+    Evaluator ev(program);
+    Channels ch{};
+    ev.begin(ch);
+    EXPECT_EQ(ev(ok), 2);
 }
 
 TEST(CalCompiler, FunctionHandlesCheckTheirArguments) {
@@ -107,8 +121,7 @@ TEST(CalCompiler, FunctionHandlesCheckTheirArguments) {
 
 TEST(CalCompiler, AConstantThatDependsOnTheRayIsEvaluatedPerRay) {
     // Radiance keeps the first ray's value (with a warning); Brume warns and evaluates it per ray.
-    Calc calc;
-    calc.library.loadText("k : Dx*2;", "t.cal");
+    Calc calc("k : Dx*2;");
     calc.channels[Dx] = 1;
     EXPECT_EQ(calc("k"), 2);
     calc.channels[Dx] = 2;

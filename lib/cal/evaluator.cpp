@@ -41,6 +41,7 @@ double Evaluator::operator()(FuncId f, std::span<const double> values) {
 
 double Evaluator::evaluate(uint32_t entry, const Frame* frame) {
     stack_ = StackDepth();
+    calls_ = 0;
     double v;
     try {
         v = eval(program_.entries[entry].root, frame);
@@ -122,6 +123,10 @@ double Evaluator::param(uint32_t index, const Frame* frame) {
 double Evaluator::call(uint32_t function, const uint32_t* args, uint32_t count, const Frame* frame) {
     const Program::Function& f = program_.functions[function];
     if (stack_.bytes() > kMaxStackBytes) throw Error(f.name + "(): recursion too deep");
+    if (++calls_ > (folding_ ? kMaxFoldCalls : kMaxCalls)) {
+        if (folding_) throw FoldFailure{};
+        throw Error(f.name + "(): over " + std::to_string(kMaxCalls) + " calls in one evaluation");
+    }
     Frame callee{args, count, frame};
     return eval(f.body, &callee);
 }
@@ -215,10 +220,10 @@ double Evaluator::mathError(const char* what) {
 double Evaluator::constantValue(uint32_t node) {
     folding_ = true;
     stack_ = StackDepth();
+    calls_ = 0;
     double v = eval(node, nullptr);
     if (!std::isfinite(v)) throw FoldFailure{};
     return v;
 }
-
 
 }  // namespace brume::cal

@@ -32,6 +32,10 @@ public:
 
     // Arguments a function called through a FuncId, or a variadic built-in passed as a parameter, takes.
     static constexpr uint32_t kMaxArgs = 16;
+    // Function calls one evaluation may make (a second or so) before it is an error rather than a hang;
+    // folding a constant gives up much earlier and leaves the work to evaluation.
+    static constexpr uint64_t kMaxCalls = 10'000'000;
+    static constexpr uint64_t kMaxFoldCalls = 100'000;
 
 private:
     friend class Compiler;
@@ -61,6 +65,7 @@ private:
     std::vector<uint64_t> stamps_;  // epoch_ when the slot's value is current, ~epoch_ while computing it
     std::vector<double> values_;
     StackDepth stack_;
+    uint64_t calls_ = 0;
     bool folding_ = false;
 };
 

@@ -43,10 +43,9 @@ TEST(CalEvaluator, ArgumentsAreThePatternsRealArguments) {
 }
 
 TEST(CalEvaluator, FunctionsTakeArgumentsAndRecurse) {
-    Calc calc;
-    calc.library.loadText("f(x) = x*x + 1; fact(n) = if(n - .5, n*fact(n - 1), 1);\n"
-                          "even(n) = if(n - .5, odd(n - 1), 1); odd(n) = if(n - .5, even(n - 1), 0);",
-                          "t.cal");
+    Calc calc(
+        "f(x) = x*x + 1; fact(n) = if(n - .5, n*fact(n - 1), 1);\n"
+        "even(n) = if(n - .5, odd(n - 1), 1); odd(n) = if(n - .5, even(n - 1), 0);");
     EXPECT_EQ(calc("f(f(2))"), 26);
     EXPECT_EQ(calc("fact(10)"), 3628800);
     EXPECT_EQ(calc("even(10) + 10*odd(7)"), 11);
@@ -56,17 +55,15 @@ TEST(CalEvaluator, FunctionsTakeArgumentsAndRecurse) {
 
 TEST(CalEvaluator, ArgumentsAreEvaluatedOnlyWhenUsed) {
     // As in Radiance: a user function standing in for `if` still ends a recursion.
-    Calc calc;
-    calc.library.loadText("choose(c, a, b) = if(c, a, b); down(n) = choose(n, down(n - 1), 7);", "t.cal");
+    Calc calc("choose(c, a, b) = if(c, a, b); down(n) = choose(n, down(n - 1), 7);");
     calc.channels[Dx] = 50;
     EXPECT_EQ(calc("down(Dx)"), 7);
 }
 
 TEST(CalEvaluator, FunctionsArePassedByName) {
-    Calc calc;
-    calc.library.loadText("va(i) = select(i, 1, 2, 3); vb(i) = select(i, 4, 5, 6);\n"
-                          "twice(g, x) = g(g(x)); apply(h, x) = twice(h, x);",
-                          "t.cal");
+    Calc calc(
+        "va(i) = select(i, 1, 2, 3); vb(i) = select(i, 4, 5, 6);\n"
+        "twice(g, x) = g(g(x)); apply(h, x) = twice(h, x);");
     EXPECT_EQ(calc("dot(va, vb)"), 32);
     EXPECT_EQ(calc("cross(1, va, vb)"), -3);
     EXPECT_EQ(calc("cross(2, va, vb) + cross(3, va, vb)"), 3);
@@ -78,8 +75,7 @@ TEST(CalEvaluator, FunctionsArePassedByName) {
 }
 
 TEST(CalEvaluator, IfAndSelectEvaluateOnlyTheChosenArgument) {
-    Calc calc;
-    calc.library.loadText("loop(x) = loop(x);", "t.cal");
+    Calc calc("loop(x) = loop(x);");
     calc.channels[Dx] = 1;
     EXPECT_EQ(calc("if(Dx, 2, loop(1))"), 2);
     EXPECT_EQ(calc("if(-Dx, loop(1), 3)"), 3);
@@ -138,10 +134,13 @@ TEST(CalEvaluator, MathErrorsGiveZeroNotNaN) {
 }
 
 TEST(CalEvaluator, RunawayRecursionIsAnError) {
-    Calc calc;
-    calc.library.loadText("f(x) = 1 + f(x + 1); x = y + 1; y = x*2;", "t.cal");
+    Calc calc(
+        "f(x) = 1 + f(x + 1); x = y + 1; y = x*2;\n"
+        "twice(n) = if(n, twice(n - 1) + twice(n - 1), 1);");
     EXPECT_EQ(calc.error("f(Dx)"), "f(): recursion too deep");
     EXPECT_EQ(calc.error("x + Dx"), "x: defined in terms of itself");
+    EXPECT_EQ(calc.error("twice(40)"), "twice(): over 10000000 calls in one evaluation");
+    EXPECT_EQ(calc("twice(10)"), 1024);
 }
 
 TEST(CalEvaluator, ThreadsShareOneProgram) {
@@ -179,7 +178,8 @@ TEST(CalEvaluator, ASkyFunctionCostsLessThanAMicrosecond) {
         clear = (.91 + 10*exp(-3*gamma) + .45*cosgamma*cosgamma)*(1 - exp(-.32/Dz))/A4;
         overcast = (1 + 2*Dz)/3;
         skybr = wmean((Dz + 1.01)^10, if(A1 - 1.5, clear, overcast)*A2, (Dz + 1.01)^-10, A3);
-    )", "sky.cal");
+    )",
+                     "sky.cal");
     Compiler compiler(library);
     ExprId sky = compiler.expression("skybr", {}, {});
     Program program = std::move(compiler).finish();

@@ -18,7 +18,7 @@ constexpr char kMark = '`';
 
 // Radiance's qualname at level 0: the key a definition of `name` made in `context` is stored under.
 std::string qualified(std::string_view name, std::string_view context) {
-    if (name.starts_with(kMark)) name.remove_prefix(1);  // explicitly local
+    if (name.starts_with(kMark)) name.remove_prefix(1);                              // explicitly local
     if (name.ends_with(kMark)) return std::string(name.substr(0, name.size() - 1));  // explicitly global
     return std::string(name) + std::string(context);
 }

@@ -15,10 +15,7 @@ public:
     }
 
 private:
-    [[gnu::noinline]] static uintptr_t address() {
-        char here;
-        return reinterpret_cast<uintptr_t>(&here);
-    }
+    [[gnu::noinline]] static uintptr_t address() { return reinterpret_cast<uintptr_t>(__builtin_frame_address(0)); }
     uintptr_t base_;
 };
 

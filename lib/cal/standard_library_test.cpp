@@ -137,8 +137,10 @@ struct RayReference {
     std::array<double, 8> values;
 };
 
-const Vec kOrigins[] = {{.3, .2, 1}, {-1, .5, 2}, {2, -1, .5}, {.1, .1, 3}, {.5, .3, 1}, {.9, .8, 1}, {1.2, -.4, 1}, {-.3, 1.7, 1}};
-const Vec kDirections[] = {{-.3, -.5, -.8}, {.6, .1, -.7}, {-.1, .7, -.4}, {.05, -.02, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}};
+const Vec kOrigins[] = {{.3, .2, 1}, {-1, .5, 2}, {2, -1, .5}, {.1, .1, 3},
+                        {.5, .3, 1}, {.9, .8, 1}, {1.2, -.4, 1}, {-.3, 1.7, 1}};
+const Vec kDirections[] = {{-.3, -.5, -.8}, {.6, .1, -.7}, {-.1, .7, -.4}, {.05, -.02, -1},
+                           {0, 0, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}};
 
 // Each expression for the rays above, as Radiance's rtrace gives it for a brightfunc on a glow
 // polygon at z = 0 with the given file, real arguments and transform (rtrace -ov -fad; the values pass

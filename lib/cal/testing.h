@@ -10,6 +10,10 @@ namespace brume::cal::testing {
 
 // A Library plus the channels and pattern arguments to evaluate with.
 struct Calc {
+    Calc() = default;
+    // With `definitions` loaded, in the global context, from "t.cal".
+    explicit Calc(std::string_view definitions) { library.loadText(definitions, "t.cal"); }
+
     Library library;
     Channels channels{};
     std::vector<double> args;
