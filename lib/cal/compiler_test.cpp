@@ -12,35 +12,30 @@ namespace {
 
 using testing::Calc;
 
-// The root node of `expr` compiled alone.
-Node root(Library& library, const std::string& expr) {
-    Compiler compiler(library);
-    ExprId e = compiler.expression(expr, {}, {});
-    Program p = std::move(compiler).finish();
+// The root node of `expr` compiled with `definitions`.
+Node root(std::string_view definitions, std::string_view expr) {
+    testing::Build build(definitions);
+    ExprId e = build.expr(expr);
+    Program p = build.finish();
     return p.nodes[p.entries[e.entry].root];
 }
 
 TEST(CalCompiler, ConstantsFoldIntoOneNumber) {
-    Library library;
-    library.loadText("k : 2*PI; half(x) = x/2; big = half(k)^2 + sq(3);", "t.cal");
-    Node n = root(library, "big + cos(PI) + select(2, 1, 2)");
+    Node n = root("k : 2*PI; half(x) = x/2; big = half(k)^2 + sq(3);", "big + cos(PI) + select(2, 1, 2)");
     EXPECT_EQ(n.op, Op::Const);
     EXPECT_DOUBLE_EQ(n.value, std::numbers::pi * std::numbers::pi + 9 - 1 + 2);
 }
 
 TEST(CalCompiler, LeadingConstantsOfASumFoldExactly) {
-    Library library;
-    Node n = root(library, "2*PI/180*Dx");
+    Node n = root("", "2*PI/180*Dx");
     ASSERT_EQ(n.op, Op::Product);
     EXPECT_EQ(n.count, 2u);
 }
 
 TEST(CalCompiler, WhatDependsOnTheRayIsNotFolded) {
-    Library library;
-    library.loadText("f(x) = x + Dx;", "t.cal");
-    EXPECT_NE(root(library, "f(1)").op, Op::Const);
-    EXPECT_NE(root(library, "A1").op, Op::Const);
-    EXPECT_NE(root(library, "source_phi(90)").op, Op::Const);
+    EXPECT_NE(root("f(x) = x + Dx;", "f(1)").op, Op::Const);
+    EXPECT_NE(root("", "A1").op, Op::Const);
+    EXPECT_NE(root("", "source_phi(90)").op, Op::Const);
 }
 
 TEST(CalCompiler, AConstantIfCompilesOnlyTheBranchTaken) {
@@ -59,18 +54,13 @@ TEST(CalCompiler, NamesBindWhenCompiledNotWhenDefined) {
 }
 
 TEST(CalCompiler, ALaterDefinitionReplacesAnEarlierOne) {
-    Calc calc("x : 1; f(a) = a; x = 2; f(a, b) = a + b;");
-    EXPECT_EQ(calc("x + f(1, 2)"), 5);
+    EXPECT_EQ(Calc("x : 1; f(a) = a; x = 2; f(a, b) = a + b;")("x + f(1, 2)"), 5);
 }
 
-TEST(CalCompiler, AVariableMayShareItsNameWithABuiltIn) {
-    Calc calc("max = 3;");
-    EXPECT_EQ(calc("max(1, max)"), 3);
-}
+TEST(CalCompiler, AVariableMayShareItsNameWithABuiltIn) { EXPECT_EQ(Calc("max = 3;")("max(1, max)"), 3); }
 
 TEST(CalCompiler, ExtraArgumentsAreIgnoredAsInRadiance) {
-    Calc calc("f(x) = x;");
-    EXPECT_EQ(calc("f(1, undefined_name) + sqrt(4, 5)"), 3);
+    EXPECT_EQ(Calc("f(x) = x;")("f(1, undefined_name) + sqrt(4, 5)"), 3);
 }
 
 TEST(CalCompiler, ErrorsNameTheNameAndWhereItIsUsed) {
@@ -85,16 +75,14 @@ TEST(CalCompiler, ErrorsNameTheNameAndWhereItIsUsed) {
 }
 
 TEST(CalCompiler, AFailedCompileLeavesNothingHalfDone) {
-    Library library;
-    library.loadText("n = nothing; m = n + 1; s(x) = r(x - 1); r(x) = if(x, s(x), undefined); ok = 2;", "t.cal");
-    Compiler compiler(library);
+    testing::Build build("n = nothing; m = n + 1; s(x) = r(x - 1); r(x) = if(x, s(x), undefined); ok = 2;");
     for (int attempt = 0; attempt < 2; ++attempt) {
-        EXPECT_THROW(compiler.expression("m", {}, {}), Error);
-        EXPECT_THROW(compiler.expression("n", {}, {}), Error);
-        EXPECT_THROW(compiler.expression("s(1)", {}, {}), Error);
+        EXPECT_THROW(build.expr("m"), Error);
+        EXPECT_THROW(build.expr("n"), Error);
+        EXPECT_THROW(build.expr("s(1)"), Error);
     }
-    ExprId ok = compiler.expression("ok + Dx", {}, {});
-    Program program = std::move(compiler).finish();
+    ExprId ok = build.expr("ok + Dx");
+    Program program = build.finish();
     Evaluator ev(program);
     Channels ch{};
     ev.begin(ch);

@@ -50,7 +50,6 @@ double Evaluator::evaluate(uint32_t entry, const Frame* frame) {
         throw;
     }
     if (std::isfinite(v)) return v;
-    if (folding_) throw FoldFailure{};
     warnOnce(program_.entries[entry].label + ": value is not a finite number, 0 used");
     return 0;
 }

@@ -55,9 +55,7 @@ TEST(CalEvaluator, FunctionsTakeArgumentsAndRecurse) {
 
 TEST(CalEvaluator, ArgumentsAreEvaluatedOnlyWhenUsed) {
     // As in Radiance: a user function standing in for `if` still ends a recursion.
-    Calc calc("choose(c, a, b) = if(c, a, b); down(n) = choose(n, down(n - 1), 7);");
-    calc.channels[Dx] = 50;
-    EXPECT_EQ(calc("down(Dx)"), 7);
+    EXPECT_EQ(Calc("choose(c, a, b) = if(c, a, b); down(n) = choose(n, down(n - 1), 7);")("down(50 + Dx)"), 7);
 }
 
 TEST(CalEvaluator, FunctionsArePassedByName) {
@@ -85,12 +83,9 @@ TEST(CalEvaluator, IfAndSelectEvaluateOnlyTheChosenArgument) {
 }
 
 TEST(CalEvaluator, VariablesAreComputedOncePerBegin) {
-    Library library;
-    library.loadText("x = Dx*2; y = x + x*x;", "t.cal");
-    Compiler compiler(library);
-    ExprId y = compiler.expression("y", {}, {});
-    ExprId x = compiler.expression("x", {}, {});
-    Program program = std::move(compiler).finish();
+    testing::Build build("x = Dx*2; y = x + x*x;");
+    ExprId y = build.expr("y"), x = build.expr("x");
+    Program program = build.finish();
     Evaluator ev(program);
     Channels ch{};
     ch[Dx] = 1;
@@ -104,14 +99,10 @@ TEST(CalEvaluator, VariablesAreComputedOncePerBegin) {
 }
 
 TEST(CalEvaluator, FunctionsOfTheProgramTakeNumericArguments) {
-    Library library;
-    library.loadText("scale(v) = v*A1; mix(a, b, t) = a + t*(b - a);", "t.cal");
-    Compiler compiler(library);
-    FuncId scale = compiler.function("scale", 1, {}, {});
-    FuncId mix = compiler.function("mix", 3, {}, {});
-    FuncId root = compiler.function("sqrt", 1, {}, {});
-    FuncId grey = compiler.function("grey", 3, {}, {});
-    Program program = std::move(compiler).finish();
+    testing::Build build("scale(v) = v*A1; mix(a, b, t) = a + t*(b - a);");
+    FuncId scale = build.func("scale", 1), mix = build.func("mix", 3), root = build.func("sqrt", 1);
+    FuncId grey = build.func("grey", 3);
+    Program program = build.finish();
     Evaluator ev(program);
     Channels ch{};
     std::vector<double> args{3};
@@ -144,11 +135,9 @@ TEST(CalEvaluator, RunawayRecursionIsAnError) {
 }
 
 TEST(CalEvaluator, ThreadsShareOneProgram) {
-    Library library;
-    library.loadText("v = Dx*Dx + A1;", "t.cal");
-    Compiler compiler(library);
-    ExprId v = compiler.expression("v", {}, {});
-    const Program program = std::move(compiler).finish();
+    testing::Build build("v = Dx*Dx + A1;");
+    ExprId v = build.expr("v");
+    const Program program = build.finish();
     std::vector<double> sums(4);
     std::vector<std::thread> threads;
     for (int t = 0; t < 4; ++t)
@@ -169,8 +158,7 @@ TEST(CalEvaluator, ThreadsShareOneProgram) {
 // A sky like gensky's (CIE overcast/clear-sky shapes) to time evaluation: the per-ray cost a renderer
 // pays for a skyfunc pattern.
 TEST(CalEvaluator, ASkyFunctionCostsLessThanAMicrosecond) {
-    Library library;
-    library.loadText(R"(
+    testing::Build build(R"(
         cosgamma = Dx*A8 + Dy*A9 + Dz*A10;
         gamma = Acos(cosgamma);
         zt = Acos(Dz);
@@ -178,11 +166,9 @@ TEST(CalEvaluator, ASkyFunctionCostsLessThanAMicrosecond) {
         clear = (.91 + 10*exp(-3*gamma) + .45*cosgamma*cosgamma)*(1 - exp(-.32/Dz))/A4;
         overcast = (1 + 2*Dz)/3;
         skybr = wmean((Dz + 1.01)^10, if(A1 - 1.5, clear, overcast)*A2, (Dz + 1.01)^-10, A3);
-    )",
-                     "sky.cal");
-    Compiler compiler(library);
-    ExprId sky = compiler.expression("skybr", {}, {});
-    Program program = std::move(compiler).finish();
+    )");
+    ExprId sky = build.expr("skybr");
+    Program program = build.finish();
     Evaluator ev(program);
     Channels ch{};
     std::vector<double> args{2, 10, .2, 2.5, 0, 0, 0, .3, .4, .866};

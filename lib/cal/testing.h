@@ -39,4 +39,15 @@ struct Calc {
     }
 };
 
+// Definitions compiled into a Program, for tests that keep their own Evaluator.
+struct Build {
+    explicit Build(std::string_view definitions) { library.loadText(definitions, "t.cal"); }
+    ExprId expr(std::string_view text) { return compiler.expression(text, {}, {}); }
+    FuncId func(std::string_view name, int nargs) { return compiler.function(name, nargs, {}, {}); }
+    Program finish() { return std::move(compiler).finish(); }
+
+    Library library;
+    Compiler compiler{library};
+};
+
 }  // namespace brume::cal::testing
