@@ -65,6 +65,12 @@ uint32_t Compiler::functionRoot(std::string_view name, int nargs, const Scope& s
 template <class F>
 uint32_t Compiler::transaction(F&& compileRoot) {
     stack_ = StackDepth();
+    if (library_.version() != libraryVersion_) {
+        // Definitions changed: what was compiled stays for the entries that use it, but is not reused.
+        variables_.clear();
+        functions_.clear();
+        libraryVersion_ = library_.version();
+    }
     const size_t nodes = program_.nodes.size(), kids = program_.kids.size(), functions = program_.functions.size(),
                  variables = program_.variables.size(), builtins = program_.builtins.size();
     try {

@@ -53,6 +53,19 @@ TEST(CalCompiler, NamesBindWhenCompiledNotWhenDefined) {
     EXPECT_EQ(calc("y"), 8);
 }
 
+TEST(CalCompiler, FilesLoadedBetweenCompilesCountForLaterOnes) {
+    testing::Build build("x = 1; y = x + Dx;");
+    ExprId before = build.expr("y");
+    build.library.loadText("x = 10;", "later.cal");
+    ExprId after = build.expr("y");
+    Program program = build.finish();
+    Evaluator ev(program);
+    Channels ch{};
+    ev.begin(ch);
+    EXPECT_EQ(ev(before), 1);
+    EXPECT_EQ(ev(after), 10);
+}
+
 TEST(CalCompiler, ALaterDefinitionReplacesAnEarlierOne) {
     EXPECT_EQ(Calc("x : 1; f(a) = a; x = 2; f(a, b) = a + b;")("x + f(1, 2)"), 5);
 }

@@ -91,6 +91,7 @@ void Library::define(Definition d) {
         warn(d.where.str() + ": " + key + (slot->constant ? ": constant redefined" : ": redefined"));
     else if (!slot && d.isFunction() && findBuiltin(d.name))
         warn(d.where.str() + ": " + key + ": definition hides library function");
+    if (slot) replaced_.push_back(std::move(slot));
     slot = std::make_unique<const Definition>(std::move(d));
 }
 
