@@ -19,6 +19,15 @@ struct Evaluator::Frame {
     mutable double values[kMaxArgs];
 };
 
+// The most common nodes, without a call: constants, channels, variables already computed.
+inline double Evaluator::eval(uint32_t index, const Frame* frame) {
+    const Node& n = program_.nodes[index];
+    if (n.op == Op::Const) return n.value;
+    if (n.op == Op::Channel) return ray_.channels[n.ref];
+    if (n.op == Op::Var && stamps_[n.ref] == epoch_) return values_[n.ref];
+    return evalNode(n, frame);
+}
+
 Evaluator::Evaluator(const Program& program)
     : program_(program), stamps_(program.variables.size(), 0), values_(program.variables.size(), 0) {}
 
@@ -54,8 +63,7 @@ double Evaluator::evaluate(uint32_t entry, const Frame* frame) {
     return 0;
 }
 
-double Evaluator::eval(uint32_t index, const Frame* frame) {
-    const Node& n = program_.nodes[index];
+double Evaluator::evalNode(const Node& n, const Frame* frame) {
     const uint32_t* kids = program_.kids.data() + n.kids;
     switch (n.op) {
         case Op::Const:

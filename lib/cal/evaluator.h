@@ -45,6 +45,7 @@ private:
 
     double evaluate(uint32_t entry, const Frame* frame);
     double eval(uint32_t node, const Frame* frame);
+    double evalNode(const Node& n, const Frame* frame);
     double variable(const Node& n);
     double param(uint32_t index, const Frame* frame);
     double call(uint32_t function, const uint32_t* args, uint32_t count, const Frame* frame);
