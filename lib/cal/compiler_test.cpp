@@ -4,7 +4,6 @@
 
 #include <numbers>
 
-#include "cal/evaluator.h"
 #include "cal/testing.h"
 
 namespace brume::cal {
@@ -58,12 +57,7 @@ TEST(CalCompiler, FilesLoadedBetweenCompilesCountForLaterOnes) {
     ExprId before = build.expr("y");
     build.library.loadText("x = 10;", "later.cal");
     ExprId after = build.expr("y");
-    Program program = build.finish();
-    Evaluator ev(program);
-    Channels ch{};
-    ev.begin(ch);
-    EXPECT_EQ(ev(before), 1);
-    EXPECT_EQ(ev(after), 10);
+    EXPECT_EQ(build.evaluate({before, after}), (std::vector<double>{1, 10}));
 }
 
 TEST(CalCompiler, ALaterDefinitionReplacesAnEarlierOne) {
@@ -94,12 +88,7 @@ TEST(CalCompiler, AFailedCompileLeavesNothingHalfDone) {
         EXPECT_THROW(build.expr("n"), Error);
         EXPECT_THROW(build.expr("s(1)"), Error);
     }
-    ExprId ok = build.expr("ok + Dx");
-    Program program = build.finish();
-    Evaluator ev(program);
-    Channels ch{};
-    ev.begin(ch);
-    EXPECT_EQ(ev(ok), 2);
+    EXPECT_EQ(build.evaluate({build.expr("ok + Dx")}), std::vector<double>{2});
 }
 
 TEST(CalCompiler, FunctionHandlesCheckTheirArguments) {

@@ -45,6 +45,16 @@ struct Build {
     ExprId expr(std::string_view text) { return compiler.expression(text, {}, {}); }
     FuncId func(std::string_view name, int nargs) { return compiler.function(name, nargs, {}, {}); }
     Program finish() { return std::move(compiler).finish(); }
+    // Finishes the program and evaluates `exprs` for one ray with every channel 0.
+    std::vector<double> evaluate(std::initializer_list<ExprId> exprs) {
+        Program program = finish();
+        Evaluator evaluator(program);
+        Channels channels{};
+        evaluator.begin(channels);
+        std::vector<double> values;
+        for (ExprId e : exprs) values.push_back(evaluator(e));
+        return values;
+    }
 
     Library library;
     Compiler compiler{library};
