@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fuzz/exercise_cal.h"
 #include "integrator/render_scene.h"
 #include "io/ray_reader.h"
 #include "scene/octree.h"
@@ -52,4 +53,12 @@ TEST(FuzzCorpus, RayInputsEndCleanly) {
         while (reader.next(ray)) ++n;
         EXPECT_LE(n, int(bytes.size()));
     }
+}
+
+TEST(FuzzCorpus, CalInputsCompileAndEvaluateCleanly) {
+    setWarningsEnabled(false);
+    auto inputs = corpus("corpus_cal");
+    ASSERT_FALSE(inputs.empty());
+    for (const std::string& text : inputs) EXPECT_TRUE(cal::exerciseCal(text)) << text;
+    setWarningsEnabled(true);
 }

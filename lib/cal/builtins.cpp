@@ -40,8 +40,9 @@ double sourceCorrection(const double* a, int, const RayInput& ray) {
             return value / ch[Rdot];
         case 2:
             need(4);
-            return value / (std::abs(ch[Dx]) * arg(ray, 3) * arg(ray, 4) + std::abs(ch[Dy]) * arg(ray, 2) * arg(ray, 4) +
-                            std::abs(ch[Dz]) * arg(ray, 2) * arg(ray, 3));
+            return value /
+                   (std::abs(ch[Dx]) * arg(ray, 3) * arg(ray, 4) + std::abs(ch[Dy]) * arg(ray, 2) * arg(ray, 4) +
+                    std::abs(ch[Dz]) * arg(ray, 2) * arg(ray, 3));
         case 3: {
             need(4);
             // The box's faces projected towards the point the shadow ray left from.
@@ -56,7 +57,8 @@ double sourceCorrection(const double* a, int, const RayInput& ray) {
             need(3);
             double cosine = std::min(ch[Dz], 1 - 1e-7);
             double diameter = arg(ray, 2), height = arg(ray, 3);
-            return value / (diameter * height * std::sqrt(1 - cosine * cosine) + .25 * pi * diameter * diameter * std::abs(cosine));
+            return value / (diameter * height * std::sqrt(1 - cosine * cosine) +
+                            .25 * pi * diameter * diameter * std::abs(cosine));
         }
         default:
             throw Error("illegal second argument to source_corr()");

@@ -8,12 +8,13 @@ namespace brume::cal {
 // Channels 1-27 are Radiance's (rt/func.c and rayinit.cal); a .cal file written for Radiance reads the
 // same value from the same $N. Channels 28 and up are Brume's: Radiance sets these names as variables
 // for *func/*data materials and prisms, Brume passes them like the others.
+// clang-format off
 enum Channel : int {
     Dx = 1, Dy, Dz,     // ray direction
     Nx, Ny, Nz,         // surface normal
     Px, Py, Pz,         // intersection point
     T,                  // distance from the ray's start
-    Rdot,               // cosine between ray and normal, in [-1, 1]
+    Rdot,               // -D.N: cosine of the angle of incidence, positive on the front, in [-1, 1]
     S,                  // world scale
     Tx, Ty, Tz,         // world origin
     Ix, Iy, Iz,         // world i unit vector
@@ -26,6 +27,7 @@ enum Channel : int {
     CrP, CgP, CbP,      // perturbed material colour
     DxA, DyA, DzA,      // direction to the target light source (prism materials)
 };
+// clang-format on
 
 // Index 0 is unused so that channels[Dx] is $1.
 constexpr int kChannelCount = DzA + 1;

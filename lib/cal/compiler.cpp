@@ -17,37 +17,82 @@ int paramIndex(const Definition* function, const std::string& name) {
     return it == function->params.end() ? -1 : static_cast<int>(it - function->params.begin());
 }
 
+// The built-ins with an operation of their own: lazy (if, select), variadic (min, max), or reading the
+// pattern's arguments (arg).
+Op opOf(const Builtin& b) {
+    static constexpr std::pair<std::string_view, Op> kSpecial[] = {
+        {"if", Op::If}, {"select", Op::Select}, {"min", Op::Min}, {"max", Op::Max}, {"arg", Op::Arg}};
+    for (const auto& [name, op] : kSpecial)
+        if (b.name == name) return op;
+    return Op::Builtin;
+}
+
 }  // namespace
 
 ExprId Compiler::expression(std::string_view text, const Scope& scope, const SourceLocation& where) {
-    stack_ = StackDepth();
-    Expr e = parseExpression(text, where);
-    uint32_t root = compile(e, Site{scope.context, nullptr, where.file});
-    program_.entries.push_back({root, 0, where.str() + ": " + std::string(text)});
-    return {static_cast<uint32_t>(program_.entries.size() - 1)};
+    uint32_t root = transaction([&] {
+        return compile(parseExpression(text, where), Site{scope.context, nullptr, where.file});
+    });
+    return {addEntry(root, 0, where.str() + ": " + std::string(text))};
 }
 
 FuncId Compiler::function(std::string_view name, int nargs, const Scope& scope, const SourceLocation& where) {
-    stack_ = StackDepth();
     std::string label = where.str() + ": " + std::string(name);
-    if (nargs < 1 || nargs > static_cast<int>(Evaluator::kMaxArgs)) throw Error(label + ": unsupported number of arguments");
-    uint32_t root;
+    if (nargs < 1 || nargs > static_cast<int>(Evaluator::kMaxArgs))
+        throw Error(label + ": unsupported number of arguments");
+    uint32_t root = transaction([&] { return functionRoot(name, nargs, scope, label); });
+    return {addEntry(root, static_cast<uint32_t>(nargs), label)};
+}
+
+// A user function's body, or a built-in applied to the arguments.
+uint32_t Compiler::functionRoot(std::string_view name, int nargs, const Scope& scope, const std::string& label) {
     const Definition* d = library_.find(name, scope);
-    const Builtin* b = findBuiltin(name);
     if (d && d->isFunction()) {
         if (d->params.size() > static_cast<size_t>(nargs))
-            throw Error(label + ": takes " + std::to_string(d->params.size()) + " arguments, not " + std::to_string(nargs));
-        root = program_.functions[functionIndex(*d)].body;
-    } else if (b) {
-        if (b->arity > nargs) throw Error(label + ": takes " + std::to_string(b->arity) + " arguments");
-        std::vector<uint32_t> params;
-        for (int i = 0; i < (b->variadic ? nargs : b->arity); ++i) params.push_back(add(Node{.op = Op::Param, .ref = uint32_t(i)}));
-        root = add(Op::Builtin, params, builtinIndex(*b));
-    } else {
-        throw Error(label + (d ? ": is a variable, not a function" : ": undefined function"));
+            throw Error(label + ": takes " + std::to_string(d->params.size()) + " arguments, not " +
+                        std::to_string(nargs));
+        return program_.functions[functionIndex(*d)].body;
     }
-    program_.entries.push_back({root, static_cast<uint32_t>(nargs), label});
-    return {static_cast<uint32_t>(program_.entries.size() - 1)};
+    const Builtin* b = findBuiltin(name);
+    if (!b) throw Error(label + (d ? ": is a variable, not a function" : ": undefined function"));
+    if (b->arity > nargs) throw Error(label + ": takes " + std::to_string(b->arity) + " arguments");
+    std::vector<uint32_t> params;
+    for (int i = 0; i < (b->variadic ? nargs : b->arity); ++i)
+        params.push_back(add(Node{.op = Op::Param, .ref = uint32_t(i)}));
+    return add(Op::Builtin, params, builtinIndex(*b));
+}
+
+template <class F>
+uint32_t Compiler::transaction(F&& compileRoot) {
+    stack_ = StackDepth();
+    if (library_.version() != libraryVersion_) {
+        // Definitions changed: what was compiled stays for the entries that use it, but is not reused.
+        variables_.clear();
+        functions_.clear();
+        libraryVersion_ = library_.version();
+    }
+    const size_t nodes = program_.nodes.size(), kids = program_.kids.size(), functions = program_.functions.size(),
+                 variables = program_.variables.size(), builtins = program_.builtins.size();
+    try {
+        return compileRoot();
+    } catch (...) {
+        // Nothing half-compiled may stay behind for a later expression to use.
+        std::erase_if(variables_, [&](const auto& v) { return v.second >= nodes; });
+        std::erase_if(functions_, [&](const auto& f) { return f.second >= functions; });
+        std::erase_if(builtins_, [&](const auto& b) { return b.second >= builtins; });
+        program_.nodes.resize(nodes);
+        program_.kids.resize(kids);
+        program_.functions.resize(functions);
+        pure_.resize(functions);
+        program_.variables.resize(variables);
+        program_.builtins.resize(builtins);
+        throw;
+    }
+}
+
+uint32_t Compiler::addEntry(uint32_t root, uint32_t params, std::string label) {
+    program_.entries.push_back({root, params, std::move(label)});
+    return static_cast<uint32_t>(program_.entries.size() - 1);
 }
 
 uint32_t Compiler::compile(const Expr& e, const Site& site) {
@@ -113,7 +158,8 @@ uint32_t Compiler::call(const Expr& e, const Site& site) {
     }
     // A variable may share its name with a built-in function (Radiance keeps them apart).
     if (const Builtin* b = findBuiltin(e.name)) return builtinCall(*b, e, site);
-    throw Error(at(e, site), d ? "'" + e.name + "' is a variable, not a function" : "undefined function '" + e.name + "'");
+    throw Error(at(e, site),
+                d ? "'" + e.name + "' is a variable, not a function" : "undefined function '" + e.name + "'");
 }
 
 uint32_t Compiler::builtinCall(const Builtin& b, const Expr& e, const Site& site) {
@@ -129,8 +175,7 @@ uint32_t Compiler::builtinCall(const Builtin& b, const Expr& e, const Site& site
     }
     size_t used = b.variadic ? e.kids.size() : static_cast<size_t>(b.arity);
     for (size_t k = 1; k < used; ++k) kids.push_back(compile(e.kids[k], site));
-    Op op = b.name == "if" ? Op::If : b.name == "select" ? Op::Select : b.name == "min" ? Op::Min
-          : b.name == "max" ? Op::Max : b.name == "arg" ? Op::Arg : Op::Builtin;
+    Op op = opOf(b);
     uint32_t node = add(op, kids, op == Op::Builtin ? builtinIndex(b) : 0);
     return !b.readsRay && allConst(kids) ? fold(node) : node;
 }
@@ -155,15 +200,17 @@ uint32_t Compiler::chain(const Expr& e, const Site& site) {
     return kids.size() == 1 ? kids[0] : add(op, kids);
 }
 
-// A variable: its memo slot, or, when its definition is a constant or a channel, that.
+// A variable: its memo slot, or its definition itself when that is as cheap as a memo look-up (a
+// constant, a channel, a real argument such as A1 = arg(1)).
 uint32_t Compiler::variableNode(const Definition& d) {
     if (auto it = variables_.find(&d); it != variables_.end()) return it->second;  // done, or in a cycle
     uint32_t var = add(Node{.op = Op::Var, .ref = static_cast<uint32_t>(program_.variables.size())});
     program_.variables.push_back(d.name);
     variables_[&d] = var;
     uint32_t body = compile(d.body, Site{d.context, nullptr, d.where.file});
-    Op op = program_.nodes[body].op;
-    if (op == Op::Const || op == Op::Channel) {
+    const Node& b = program_.nodes[body];
+    Op op = b.op;
+    if (op == Op::Const || op == Op::Channel || (op == Op::Arg && isConst(program_.kids[b.kids]))) {
         program_.nodes[var] = program_.nodes[body];
     } else {
         program_.nodes[var].kids = static_cast<uint32_t>(program_.kids.size());
@@ -199,7 +246,10 @@ uint32_t Compiler::add(Node n) {
 }
 
 uint32_t Compiler::add(Op op, const std::vector<uint32_t>& kids, uint32_t ref) {
-    Node n{.op = op, .kids = static_cast<uint32_t>(program_.kids.size()), .count = static_cast<uint32_t>(kids.size()), .ref = ref};
+    Node n{.op = op,
+           .kids = static_cast<uint32_t>(program_.kids.size()),
+           .count = static_cast<uint32_t>(kids.size()),
+           .ref = ref};
     program_.kids.insert(program_.kids.end(), kids.begin(), kids.end());
     return add(n);
 }

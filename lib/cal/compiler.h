@@ -11,7 +11,8 @@
 namespace brume::cal {
 
 // Compile every expression a scene needs, then take the Program and share it between threads, each with
-// its own Evaluator. The Library must not change while a Compiler uses it.
+// its own Evaluator. Files may be loaded into the Library between compiles: each expression uses the
+// definitions there are when it is compiled.
 //
 // Everything that depends neither on the channels nor on the pattern's arguments is folded into a
 // constant (':' definitions included), so evaluation only does per-ray work. An undefined name is an
@@ -37,6 +38,11 @@ private:
         const std::string& file;
     };
 
+    // Compiles an entry's root; if that fails, undoes everything it added.
+    template <class F>
+    uint32_t transaction(F&& compileRoot);
+    uint32_t functionRoot(std::string_view name, int nargs, const Scope& scope, const std::string& label);
+    uint32_t addEntry(uint32_t root, uint32_t params, std::string label);
     uint32_t compile(const Expr& e, const Site& site);
     uint32_t compileArgument(const Expr& e, const Site& site);
     uint32_t name(const Expr& e, const Site& site, bool functionAllowed);
@@ -63,6 +69,7 @@ private:
     std::unordered_map<const Definition*, uint32_t> functions_;  // definition -> Program::functions index
     std::vector<bool> pure_;  // per function: folds with constant arguments (false while being compiled)
     std::unordered_map<const Builtin*, uint32_t> builtins_;
+    uint64_t libraryVersion_ = 0;  // of the definitions variables_ and functions_ were compiled from
     StackDepth stack_;
 };
 

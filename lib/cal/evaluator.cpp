@@ -19,6 +19,15 @@ struct Evaluator::Frame {
     mutable double values[kMaxArgs];
 };
 
+// The most common nodes, without a call: constants, channels, variables already computed.
+inline double Evaluator::eval(uint32_t index, const Frame* frame) {
+    const Node& n = program_.nodes[index];
+    if (n.op == Op::Const) return n.value;
+    if (n.op == Op::Channel) return ray_.channels[n.ref];
+    if (n.op == Op::Var && stamps_[n.ref] == epoch_) return values_[n.ref];
+    return evalNode(n, frame);
+}
+
 Evaluator::Evaluator(const Program& program)
     : program_(program), stamps_(program.variables.size(), 0), values_(program.variables.size(), 0) {}
 
@@ -41,6 +50,7 @@ double Evaluator::operator()(FuncId f, std::span<const double> values) {
 
 double Evaluator::evaluate(uint32_t entry, const Frame* frame) {
     stack_ = StackDepth();
+    calls_ = 0;
     double v;
     try {
         v = eval(program_.entries[entry].root, frame);
@@ -49,13 +59,11 @@ double Evaluator::evaluate(uint32_t entry, const Frame* frame) {
         throw;
     }
     if (std::isfinite(v)) return v;
-    if (folding_) throw FoldFailure{};
     warnOnce(program_.entries[entry].label + ": value is not a finite number, 0 used");
     return 0;
 }
 
-double Evaluator::eval(uint32_t index, const Frame* frame) {
-    const Node& n = program_.nodes[index];
+double Evaluator::evalNode(const Node& n, const Frame* frame) {
     const uint32_t* kids = program_.kids.data() + n.kids;
     switch (n.op) {
         case Op::Const:
@@ -100,7 +108,7 @@ double Evaluator::variable(const Node& n) {
     if (stamps_[n.ref] == epoch_) return values_[n.ref];
     const std::string& name = program_.variables[n.ref];
     if (stamps_[n.ref] == ~epoch_) throw Error(name + ": defined in terms of itself");
-    checkStack(name);
+    if (stack_.bytes() > kMaxStackBytes) throw Error(name + ": definitions nested too deeply");
     stamps_[n.ref] = ~epoch_;
     double v = eval(program_.kids[n.kids], nullptr);
     values_[n.ref] = v;
@@ -121,7 +129,11 @@ double Evaluator::param(uint32_t index, const Frame* frame) {
 
 double Evaluator::call(uint32_t function, const uint32_t* args, uint32_t count, const Frame* frame) {
     const Program::Function& f = program_.functions[function];
-    checkStack(f.name + "()");
+    if (stack_.bytes() > kMaxStackBytes) throw Error(f.name + "(): recursion too deep");
+    if (++calls_ > (folding_ ? kMaxFoldCalls : kMaxCalls)) {
+        if (folding_) throw FoldFailure{};
+        throw Error(f.name + "(): over " + std::to_string(kMaxCalls) + " calls in one evaluation");
+    }
     Frame callee{args, count, frame};
     return eval(f.body, &callee);
 }
@@ -215,13 +227,10 @@ double Evaluator::mathError(const char* what) {
 double Evaluator::constantValue(uint32_t node) {
     folding_ = true;
     stack_ = StackDepth();
+    calls_ = 0;
     double v = eval(node, nullptr);
     if (!std::isfinite(v)) throw FoldFailure{};
     return v;
-}
-
-void Evaluator::checkStack(const std::string& what) const {
-    if (stack_.bytes() > kMaxStackBytes) throw Error(what + ": recursion too deep");
 }
 
 }  // namespace brume::cal

@@ -32,6 +32,10 @@ public:
 
     // Arguments a function called through a FuncId, or a variadic built-in passed as a parameter, takes.
     static constexpr uint32_t kMaxArgs = 16;
+    // Function calls one evaluation may make (a second or so) before it is an error rather than a hang;
+    // folding a constant gives up much earlier and leaves the work to evaluation.
+    static constexpr uint64_t kMaxCalls = 10'000'000;
+    static constexpr uint64_t kMaxFoldCalls = 100'000;
 
 private:
     friend class Compiler;
@@ -41,6 +45,7 @@ private:
 
     double evaluate(uint32_t entry, const Frame* frame);
     double eval(uint32_t node, const Frame* frame);
+    double evalNode(const Node& n, const Frame* frame);
     double variable(const Node& n);
     double param(uint32_t index, const Frame* frame);
     double call(uint32_t function, const uint32_t* args, uint32_t count, const Frame* frame);
@@ -54,7 +59,6 @@ private:
     // For the Compiler: the value of a constant node; FoldFailure if it has a math error.
     double constantValue(uint32_t node);
     double mathError(const char* what);
-    void checkStack(const std::string& what) const;
 
     const Program& program_;
     RayInput ray_;
@@ -62,6 +66,7 @@ private:
     std::vector<uint64_t> stamps_;  // epoch_ when the slot's value is current, ~epoch_ while computing it
     std::vector<double> values_;
     StackDepth stack_;
+    uint64_t calls_ = 0;
     bool folding_ = false;
 };
 

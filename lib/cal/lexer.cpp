@@ -39,9 +39,12 @@ void Lexer::skipSpaceAndComments() {
     for (int depth = 0, opened = 0; pos_ < text_.size(); ++pos_) {
         char c = text_[pos_];
         if (c == '\n' && line_ > 0) ++line_;
-        if (c == '{' && depth++ == 0) opened = line_;
-        else if (c == '}' && depth > 0) --depth;
-        else if (depth == 0 && !std::isspace(static_cast<unsigned char>(c))) return;
+        if (c == '{' && depth++ == 0)
+            opened = line_;
+        else if (c == '}' && depth > 0)
+            --depth;
+        else if (depth == 0 && !std::isspace(static_cast<unsigned char>(c)))
+            return;
         if (depth > 0 && pos_ + 1 == text_.size()) throw Error({file_, opened}, "comment '{' is never closed");
     }
 }
@@ -104,8 +107,10 @@ void Lexer::scanNumber() {
     auto [end, ec] = std::from_chars(token_.text.data(), token_.text.data() + token_.text.size(), token_.number);
     // from_chars reports underflow and overflow alike; a tiny number is zero, a huge one an error.
     bool tiny = token_.text.find("e-") != std::string_view::npos || token_.text.find("E-") != std::string_view::npos;
-    if (ec == std::errc::result_out_of_range && tiny) token_.number = 0;
-    else if (ec != std::errc()) fail("number out of range");
+    if (ec == std::errc::result_out_of_range && tiny)
+        token_.number = 0;
+    else if (ec != std::errc())
+        fail("number out of range");
 }
 
 }  // namespace brume::cal

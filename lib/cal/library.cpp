@@ -18,7 +18,7 @@ constexpr char kMark = '`';
 
 // Radiance's qualname at level 0: the key a definition of `name` made in `context` is stored under.
 std::string qualified(std::string_view name, std::string_view context) {
-    if (name.starts_with(kMark)) name.remove_prefix(1);  // explicitly local
+    if (name.starts_with(kMark)) name.remove_prefix(1);                              // explicitly local
     if (name.ends_with(kMark)) return std::string(name.substr(0, name.size() - 1));  // explicitly global
     return std::string(name) + std::string(context);
 }
@@ -91,6 +91,7 @@ void Library::define(Definition d) {
         warn(d.where.str() + ": " + key + (slot->constant ? ": constant redefined" : ": redefined"));
     else if (!slot && d.isFunction() && findBuiltin(d.name))
         warn(d.where.str() + ": " + key + ": definition hides library function");
+    if (slot) replaced_.push_back(std::move(slot));
     slot = std::make_unique<const Definition>(std::move(d));
 }
 

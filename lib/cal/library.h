@@ -7,11 +7,13 @@
 // starting with '`' is local only. A later definition of a name in the same context replaces the earlier
 // one (with a warning if it differs); references resolve when compiled, not when defined.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "cal/expression.h"
 
@@ -38,11 +40,15 @@ public:
 
     // The definition `name` means in `scope`, or nullptr.
     const Definition* find(std::string_view name, const Scope& scope) const;
+    // Changes whenever a definition is added or replaced.
+    uint64_t version() const { return replaced_.size() + definitions_.size(); }
 
 private:
     void define(Definition d);
 
     std::unordered_map<std::string, std::unique_ptr<const Definition>> definitions_;
+    // Kept for Compilers that have already compiled them.
+    std::vector<std::unique_ptr<const Definition>> replaced_;
     std::set<std::string> loaded_;  // contexts of loaded files
 };
 

@@ -106,12 +106,12 @@ double perlinNoise(double x, double y, double z) { return perlinNoiseAndGradient
 double fractalNoise(double x, double y, double z) {
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return kNaN;
     constexpr int kOctaves = 11;
-    double sum = 0, amplitude = 1, total = 0, frequency = 1;
-    for (int k = 0; k < kOctaves; ++k, amplitude *= 0.5, frequency *= 2) {
+    // The scale gives the spread of Radiance's fnoise3 (standard deviation 0.33, extremes about 1.2).
+    constexpr double kScale = 0.8;
+    double sum = 0, amplitude = kScale, frequency = 1;
+    for (int k = 0; k < kOctaves; ++k, amplitude *= 0.5, frequency *= 2)
         sum += amplitude * valueNoise(x * frequency, y * frequency, z * frequency);
-        total += amplitude;
-    }
-    return sum / total;
+    return sum;
 }
 
 double hashRandom(double x) { return static_cast<double>(mix(bits(x)) >> 11) * 0x1p-53; }

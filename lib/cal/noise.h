@@ -12,8 +12,9 @@ double perlinNoise(double x, double y, double z);
 // finite differences of noise3).
 std::array<double, 4> perlinNoiseAndGradient(double x, double y, double z);
 
-// Fractal (1/f) noise in [-1, 1]: eleven octaves of value noise, each twice the frequency and half the
-// amplitude of the last, from the unit lattice down to about Radiance's 0.0005 resolution.
+// Fractal (1/f) noise, mostly within [-1, 1] like Radiance's: eleven octaves of value noise, each twice
+// the frequency and half the amplitude of the last, from the unit lattice down to about Radiance's
+// 0.0005 resolution.
 double fractalNoise(double x, double y, double z);
 
 // A pseudo-random number in [0, 1) that depends only on x (Radiance's rand(x)).

@@ -15,14 +15,12 @@ public:
     }
 
 private:
-    [[gnu::noinline]] static uintptr_t address() {
-        char here;
-        return reinterpret_cast<uintptr_t>(&here);
-    }
+    [[gnu::noinline]] static uintptr_t address() { return reinterpret_cast<uintptr_t>(__builtin_frame_address(0)); }
     uintptr_t base_;
 };
 
-// The stack each of parsing, compiling and evaluating may use (threads have at least 2 MB).
-constexpr size_t kMaxStackBytes = 512 * 1024;
+// The stack compiling, and each evaluation, may use: about 3000 levels of recursion in a .cal function
+// (threads have 8 MB by default, rtrace's 64 MB).
+constexpr size_t kMaxStackBytes = 1 << 20;
 
 }  // namespace brume::cal
