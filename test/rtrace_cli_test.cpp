@@ -1,46 +1,34 @@
 // rtrace as a program: its output stream byte for byte, its options, its errors.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "cli.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Output {
-    std::string out, err;
-    int status;
-};
+using brume_test::Output;
 
-// Runs rtrace with `args` (shell words), `input` on stdin.
+// Runs rtrace with `args` (shell words), `input` on stdin, in the scratch directory.
 Output rtrace(const std::string& args, const std::string& input) {
-    fs::path dir = fs::temp_directory_path() / ("brume_cli_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    fs::path dir = brume_test::scratchDir("cli");
     std::ofstream(dir / "in") << input;
-    std::string cmd = "cd " + dir.string() + " && " + BRUME_BIN_DIR + std::string("/rtrace ") + args +
-                      " < in > out 2> err";
-    int status = std::system(cmd.c_str());
-    auto slurp = [&](const char* name) {
-        std::ifstream f(dir / name, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(f), {});
-    };
-    return {slurp("out"), slurp("err"), WEXITSTATUS(status)};
+    return brume_test::runCaptured("cd " + dir.string() + " && " + BRUME_BIN_DIR + std::string("/rtrace ") + args + " < in",
+                                   dir);
 }
 
 void writeScene(const std::string& name, const std::string& text) {
-    fs::path dir = fs::temp_directory_path() / ("brume_cli_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / name) << text;
+    std::ofstream(brume_test::scratchDir("cli") / name) << text;
 }
 
 const char* kScene =

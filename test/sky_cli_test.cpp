@@ -3,8 +3,6 @@
 // errors.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -14,29 +12,20 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Output {
-    std::string out, err;
-    int status;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(f), {});
-}
+using brume_test::Output;
+using brume_test::slurp;
 
 // Runs a command line ("gensky 3 21 12 ...") with Brume's programs first on PATH, so that the program
 // sees its plain name as argv[0], as it does when a scene says `!gensky ...`.
 Output run(const std::string& commandLine) {
-    fs::path dir = fs::temp_directory_path() / ("brume_sky_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::string cmd = "PATH=" + std::string(BRUME_BIN_DIR) + ":$PATH " + commandLine + " > " + (dir / "out").string() +
-                      " 2> " + (dir / "err").string();
-    int status = std::system(cmd.c_str());
-    return {slurp(dir / "out"), slurp(dir / "err"), WEXITSTATUS(status)};
+    return brume_test::runCaptured("PATH=" + std::string(BRUME_BIN_DIR) + ":$PATH " + commandLine,
+                                   brume_test::scratchDir("sky"));
 }
 
 std::vector<std::string> words(const std::string& text) {

@@ -3,8 +3,6 @@
 // xform found by "!xform" lines of scenes read by rtrace.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -14,30 +12,22 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 const fs::path kData = fs::path(BRUME_TEST_DATA) / "xform";
 
-struct Output {
-    std::string out, err;
-    int status;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(f), {});
-}
+using brume_test::Output;
+using brume_test::slurp;
 
 // Runs a shell command line in data/xform, with Brume's programs first on PATH and RAYPATH=.
 Output run(const std::string& command, const fs::path& dir = kData) {
-    fs::path tmp = fs::temp_directory_path() / ("brume_xform_" + std::to_string(::getpid()));
-    fs::create_directories(tmp);
-    std::string line = "cd '" + dir.string() + "' && PATH='" + BRUME_BIN_DIR + "':\"$PATH\" RAYPATH=. sh -c '" +
-                       command + "' > '" + (tmp / "out").string() + "' 2> '" + (tmp / "err").string() + "' < /dev/null";
-    int status = std::system(line.c_str());
-    return {slurp(tmp / "out"), slurp(tmp / "err"), WEXITSTATUS(status)};
+    return brume_test::runCaptured("cd '" + dir.string() + "' && PATH='" + BRUME_BIN_DIR + "':\"$PATH\" RAYPATH=. sh -c '" +
+                                       command + "' < /dev/null",
+                                   brume_test::scratchDir("xform"));
 }
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -107,8 +97,7 @@ TEST(XformCli, BadTransformWritesNothing) {
 }
 
 TEST(XformCli, ABadLineOfAnArgumentFileWritesNothing) {
-    fs::path dir = fs::temp_directory_path() / ("brume_xform_args_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    fs::path dir = brume_test::scratchDir("xform_args");
     std::ofstream(dir / "args") << "-t 1 0 0\n-t 1 0\n";
     fs::copy_file(kData / "sub" / "part.rad", dir / "part.rad", fs::copy_options::overwrite_existing);
     Output o = run("xform -f args part.rad", dir);
@@ -155,14 +144,14 @@ TEST(XformCli, QuotedNamesInArgumentFiles) {
 
 // rtrace reads a scene whose "!xform" line must run Brume's xform: Radiance's is not on PATH.
 TEST(XformCli, RtraceRunsBrumesXformForSceneCommands) {
-    fs::path dir = fs::temp_directory_path() / ("brume_xform_scene_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    fs::path dir = brume_test::scratchDir("xform_scene");
     std::ofstream(dir / "lamp.rad") << "void light glow 0 0 3 1 1 1\nglow sphere bulb 0 0 4 0 0 0 .1\n";
     std::ofstream(dir / "room.rad") << "!xform -t 0 0 2 lamp.rad\n";
-    std::string line = "cd '" + dir.string() + "' && echo 0 0 0 0 0 1 | env PATH=/usr/bin:/bin '" + BRUME_BIN_DIR +
-                       "/rtrace' -h- -oLs room.rad > out 2> err";
-    EXPECT_EQ(WEXITSTATUS(std::system(line.c_str())), 0) << slurp(dir / "err");
-    std::vector<std::string> out = words(slurp(dir / "out"));
+    Output r = brume_test::runCaptured("cd '" + dir.string() + "' && echo 0 0 0 0 0 1 | env PATH=/usr/bin:/bin '" +
+                                           BRUME_BIN_DIR + "/rtrace' -h- -oLs room.rad",
+                                       dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> out = words(r.out);
     ASSERT_EQ(out.size(), 2u);
     EXPECT_NEAR(std::stod(out[0]), 1.9, 1e-6);  // the bulb moved up to z = 2
     EXPECT_EQ(out[1], "bulb");

@@ -1,0 +1,37 @@
+// Running Brume's programs from end-to-end tests: a shell command line, what it wrote, its exit status.
+#pragma once
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace brume_test {
+
+struct Output {
+    std::string out, err;
+    int status;
+};
+
+inline std::string slurp(const std::filesystem::path& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+// A scratch directory of this test process, one per `tag`.
+inline std::filesystem::path scratchDir(const std::string& tag) {
+    auto dir = std::filesystem::temp_directory_path() / ("brume_" + tag + "_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// Runs the shell command `line`, its standard output and error captured through files in `scratch`.
+inline Output runCaptured(const std::string& line, const std::filesystem::path& scratch) {
+    std::string cmd = line + " > '" + (scratch / "out").string() + "' 2> '" + (scratch / "err").string() + "'";
+    int status = std::system(cmd.c_str());
+    return {slurp(scratch / "out"), slurp(scratch / "err"), WEXITSTATUS(status)};
+}
+
+}  // namespace brume_test
