@@ -142,6 +142,16 @@ TEST_F(RtraceCli, PlannedTypesAreRefusedByName) {
     EXPECT_NE(r.err.find("medium.rad:1"), std::string::npos) << r.err;
 }
 
+// -om names the surface's own modifier, -oM the material its chain of patterns ends in.
+TEST_F(RtraceCli, ModifierAndMaterialNamesDifferAcrossPatterns) {
+    writeScene("chain.rad", "void plastic base 0 0 5 .5 .5 .5 0 0\n"
+                            "base brightfunc dim 2 .5 . 0 0\n"
+                            "dim polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n");
+    Output r = rtrace("-h- -osmM chain.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "floor\tdim\tbase\t\n");
+}
+
 // A pattern's missing function file or bad expression is reported where the pattern is defined.
 TEST_F(RtraceCli, PatternErrorsNameThePattern) {
     writeScene("pattern.rad", "void brightfunc b 2 f missing.cal 0 0\nb plastic p 0 0 5 .5 .5 .5 0 0\n");
@@ -152,6 +162,23 @@ TEST_F(RtraceCli, PatternErrorsNameThePattern) {
     r = rtrace("syntax.rad", "");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("syntax.rad:1:"), std::string::npos) << r.err;
+    struct Case {
+        const char* scene;
+        const char* message;
+    } cases[] = {
+        {"void brightfunc b 4 1 . -t 1 0 0\n", "pattern.rad:1: bad transform for brightfunc \"b\""},
+        {"void plastic a 0 0 5 .5 .5 .5 0 0\nvoid plastic c 0 0 5 .1 .1 .1 0 0\n"
+         "void brightfunc d 2 1 . 0 0\nd mixfunc m 4 a c .5 . 0 0\n",
+         "pattern.rad:4: inappropriate modifier for mixfunc \"m\""},
+        {"void plastic a 0 0 5 .5 .5 .5 0 0\na plastic c 0 0 5 .1 .1 .1 0 0\n",
+         "pattern.rad:2: conflicting material among the modifiers of plastic \"c\""},
+    };
+    for (const Case& c : cases) {
+        writeScene("pattern.rad", c.scene);
+        r = rtrace("pattern.rad", "");
+        EXPECT_NE(r.status, 0) << c.scene;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    }
 }
 
 TEST_F(RtraceCli, UnknownOptionsAndMissingSceneAreErrors) {

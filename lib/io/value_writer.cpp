@@ -132,7 +132,8 @@ void ValueWriter::fields(const std::string& spec, const OutputRay& ray) {
                 break;
             }
             case 's': text(objectName(r.surfaceObject)); break;
-            case 'm':
+            // m: the surface's own modifier (a pattern, say); M: the material its modifiers end in.
+            case 'm': text(hit && r.surfaceObject >= 0 ? objectName(scene_.objects[r.surfaceObject].modifier) : "*"); break;
             case 'M': text(hit ? objectName(r.modifierObject) : "*"); break;
             case 'r': color(r.mirrored); break;
             case 'x': color(r.value - r.mirrored); break;
