@@ -198,7 +198,8 @@ Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter
         auto hit = scene_.geometry().intersect(ray);
         if (!hit) return toInfinity ? t : Spectrum(0.f);
         Shading sh = shadingAt(ray, *hit, false);
-        int mat = shaderAt(ray, *hit, sh, ctx);
+        // The source itself: its pattern is the caller's (sourceRadiance), only its material matters here.
+        int mat = hit->surface == target ? scene_.materialObject(target) : shaderAt(ray, *hit, sh, ctx);
         bool cut = mat < 0 || (state.clipCount > 0 && clipped(mat, state)) ||
                    crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
         if (cut) {
