@@ -121,22 +121,19 @@ ScanOrder readResolution(std::istream& in, const std::string& name) {
 void readHeader(std::istream& in, const std::string& name, Picture& p) {
     std::string line;
     if (!std::getline(in, line) || line != "#?RADIANCE") bad(name, "not a Radiance picture");
-    bool formatSeen = false;
     while (std::getline(in, line) && !line.empty()) {
         if (line.rfind("FORMAT=", 0) == 0) {
             std::string f = line.substr(7);
             while (!f.empty() && std::isspace((unsigned char)f.back())) f.pop_back();
             if (f != "32-bit_rle_rgbe" && f != "32-bit_rle_xyze") bad(name, "unsupported picture format " + f);
             p.xyz = f == "32-bit_rle_xyze";
-            formatSeen = true;
             continue;
         }
         if (line.rfind("EXPOSURE=", 0) == 0) p.exposure *= std::atof(line.c_str() + 9);
         if (line.rfind("PIXASPECT=", 0) == 0) p.pixelAspect *= std::atof(line.c_str() + 10);
         p.header.push_back(line);
     }
-    if (!in) bad(name, "truncated header");
-    (void)formatSeen;  // Radiance assumes RGBE when FORMAT= is missing
+    if (!in) bad(name, "truncated header");  // without FORMAT=, RGBE, as Radiance assumes
     if (!(p.pixelAspect > 0) || !(p.exposure > 0)) bad(name, "bad EXPOSURE= or PIXASPECT=");
 }
 
