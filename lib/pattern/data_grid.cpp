@@ -67,7 +67,6 @@ private:
     int line_ = 1, wordLine_ = 1;
 };
 
-constexpr int kMaxDimensions = 16;
 constexpr double kMaxValues = 1e9;
 
 DataGrid::Axis readAxis(NumberReader& r) {

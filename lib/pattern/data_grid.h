@@ -11,6 +11,8 @@ namespace brume {
 
 class DataGrid {
 public:
+    static constexpr int kMaxDimensions = 16;
+
     // One dimension: `count` nodes evenly spaced from `begin` to `end`, or at the given points (monotonic).
     struct Axis {
         double begin = 0, end = 1;

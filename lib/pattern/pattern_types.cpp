@@ -99,7 +99,7 @@ public:
     // Fills values[0…2]; returns how many there are.
     int interpolate(const PatternHit& hit, PatternEvaluator& e, double* values) const {
         cal::Evaluator& eval = f_.begin(hit, e);
-        double point[16];
+        double point[DataGrid::kMaxDimensions];
         size_t n = f_.exprs.size();
         for (size_t i = 0; i < n; ++i) point[i] = eval(f_.exprs[i]);
         if (picture_) std::swap(point[0], point[1]);
