@@ -4,6 +4,7 @@
 #include <string>
 
 #include "integrator/integrator.h"
+#include "scene/placed_files.h"
 #include "scene/reader.h"
 
 namespace brume::test {
@@ -12,6 +13,7 @@ inline Scene sceneFromText(const std::string& text) {
     Scene scene;
     std::istringstream in(text);
     readSceneText(scene, in, "test.rad");
+    loadPlacedFiles(scene);
     return scene;
 }
 

@@ -56,7 +56,7 @@ RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t i
     RayRecord rec;
     rec.point = p;
     rec.normal = rec.surfaceNormal = n;
-    rec.value = sensorIrradiance(p + primaryTmin(p) * n, n, -1, 0.0, ctx, rec, -n);
+    rec.value = sensorIrradiance(p + primaryTmin(p) * n, n, SurfaceId{}, 0.0, ctx, rec, -n);
     return rec;
 }
 
@@ -77,7 +77,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
             rec.point = hit->point;
             rec.normal = shadingAt(ray, *hit, false).normal;
             rec.surfaceNormal = hit->normal;
-            rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
+            rec.surfaceObject = scene_.surfaceObject(hit->surface);
             rec.modifierObject = mat;
         }
         const Emitter* e = hit ? scene_.emitter(mat) : nullptr;
@@ -121,7 +121,7 @@ bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) con
 
 // Irradiance as Radiance computes it for -I and -i: the value of a white Lambertian sensor of reflectance π
 // facing n. It stands for a primary ray: in a ray tree, its rays are its children.
-Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, int surface, double distance, Context& ctx,
+Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance, Context& ctx,
                                       RayRecord& rec, const dvec3& dir) const {
     Shading sh{point, n, -n, 1.0, false, false, distance};
     Lobes lobes;
@@ -154,19 +154,17 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
                                    Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
     if (!hit) return escaped(ray, state, record, misEmission);
-    const Surface& surface = scene_.geometry().surfaces()[hit->surface];
     int mat = scene_.materialObject(hit->surface);
     if (state.clipCount > 0 && clipped(mat, state)) return passThrough(ray, *hit, state, ctx, record, misEmission);
     if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, crossed))
         return passThrough(ray, *hit, crossed, ctx, record, misEmission);
-    Shading sh = shadingAt(ray, *hit,
-                           std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape));
+    Shading sh = shadingAt(ray, *hit, scene_.geometry().isFlat(hit->surface));
     if (record) {
         record->firstLength = record->effectiveLength = hit->t;
         record->point = hit->point;
         record->normal = sh.normal;
         record->surfaceNormal = hit->normal;
-        record->surfaceObject = surface.object;
+        record->surfaceObject = scene_.surfaceObject(hit->surface);
         record->modifierObject = mat;
     }
     if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, *hit, sh, *e, state, ctx, record, misEmission);
@@ -295,7 +293,7 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
     return true;
 }
 
-Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
+Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state, Context& ctx,
                            RayRecord* record, Spectrum* misEmission) const {
     Spectrum value(0.f);
     double strongest = 0;
@@ -310,7 +308,7 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
         bool stillSampled = straight && state.kind == PathState::Kind::Sampled;
         if (!stillSampled) child.kind = PathState::Kind::Specular;
         if (state.kind == PathState::Kind::Sampled && !d.transmits && mirrorImagesOn() && scene_.isPlanarMirror(surface))
-            child.viaMirror = surface;
+            child.viaMirror = surface.surface;
         RayRecord childRecord;
         Spectrum share(0.f);
         Spectrum li = radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
@@ -341,7 +339,7 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
 }
 
 // One ray per sampled glossy lobe, weighted against next-event estimation where it meets a source.
-Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                             Context& ctx) const {
     Spectrum sum(0.f);
     dvec3 wo = -sh.dir;
@@ -375,7 +373,7 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, 
 // Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified
 // paths at the first bounce and one after it, for -ab bounces; beyond them Radiance's -av value. Sources
 // these paths meet are left out: next-event estimation counted them.
-Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                              Context& ctx) const {
     Spectrum sum(0.f);
     for (bool transmit : {false, true}) {

@@ -64,16 +64,16 @@ private:
                         const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
                          RayRecord* record, Spectrum* misEmission) const;
-    Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, int surface, double distance, Context& ctx,
+    Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance, Context& ctx,
                               RayRecord& rec, const dvec3& dir) const;
-    Spectrum shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
+    Spectrum shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state, Context& ctx,
                    RayRecord* record, Spectrum* misEmission = nullptr) const;
     Spectrum sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
                                 const SurfaceHit* hit, Spectrum* misEmission) const;
-    Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+    Spectrum direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state, Context& ctx) const;
+    Spectrum ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state, Context& ctx) const;
+    Spectrum glossy(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state, Context& ctx) const;
+    Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                               Context& ctx) const;
     Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
                       bool withDiffuse = true) const;
@@ -82,7 +82,7 @@ private:
                          const Spectrum& value) const;
     bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
     Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state) const;
-    Spectrum transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
+    Spectrum transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
                            SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;
     bool crossesAntimatter(int material, bool backside, PathState& state) const;

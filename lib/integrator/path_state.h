@@ -14,10 +14,19 @@ constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this o
 
 inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
 
-// The hit as a material sees it: the normal turned toward the ray, and which side was hit.
+// The hit as a material sees it: the normal, perturbed, turned toward the ray, and which side was hit.
 inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat) {
     double along = glm::dot(hit.normal, ray.dir);
-    return Shading{hit.point, along > 0 ? -hit.normal : hit.normal, ray.dir, std::abs(along), along > 0, flat, hit.t};
+    bool backside = along > 0;
+    dvec3 n = hit.normal, turned = backside ? -n : n;
+    if (hit.perturbation == dvec3(0)) return Shading{hit.point, turned, ray.dir, std::abs(along), backside, flat, hit.t};
+    // Radiance's raynormal: the perturbed normal turns with the surface; where it would face away from the ray,
+    // it is mirrored across the plane normal to the ray.
+    n = glm::normalize(n + hit.perturbation);
+    if (backside) n = -n;
+    double cosine = -glm::dot(n, ray.dir);
+    if (cosine <= 0) n += 2 * cosine * ray.dir, cosine = -cosine;
+    return Shading{hit.point, n, ray.dir, cosine, backside, flat, hit.t};
 }
 }  // namespace integrator_detail
 

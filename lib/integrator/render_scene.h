@@ -1,6 +1,7 @@
 // The scene compiled for rendering: exact geometry in Embree, the material or emitter of every surface,
 // and the light sources for next-event estimation.
 #pragma once
+#include <deque>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -13,7 +14,7 @@ namespace brume {
 
 // A flat mirror, through which next-event estimation reaches sources by their mirror images (-dr).
 struct PlanarMirror {
-    int surface;
+    SurfaceId surface;
     dvec3 normal;  // its front
     double offset;  // normal · any point of its plane
     Spectrum reflectance;
@@ -28,8 +29,12 @@ public:
     const SceneGeometry& geometry() const { return *geometry_; }
     const std::vector<Light>& lights() const { return lights_; }
 
-    // The object that shades surface s: a material or an emitter (its modifier after aliases).
-    int materialObject(int surface) const { return surfaceMaterial_[surface]; }
+    // The object that shades a surface: a material or an emitter (its modifier after aliases, or that of the
+    // instance or mesh placing it, see Placement::modifierObject).
+    int materialObject(const SurfaceId& id) const;
+    // The object rtrace names for a surface (-os): the surface, or the instance or mesh whose modifier it
+    // takes, or the mesh of a triangle.
+    int surfaceObject(const SurfaceId& id) const;
     const Material* material(int object) const { return materials_[object].get(); }
     const Emitter* emitter(int object) const { return emitters_[object].get(); }
     // For an antimatter object: the modifiers whose surfaces it cuts away inside its volume (else nullptr).
@@ -37,16 +42,21 @@ public:
         auto it = antimatter_.find(object);
         return it == antimatter_.end() ? nullptr : &it->second;
     }
-    // The light that samples surface s, or -1.
-    int lightOfSurface(int surface) const { return surfaceLight_[surface]; }
+    // The light that samples a surface, or -1.
+    int lightOfSurface(const SurfaceId& id) const;
     const std::vector<PlanarMirror>& planarMirrors() const { return mirrors_; }
-    bool isPlanarMirror(int surface) const { return surfaceMirror_[surface] >= 0; }
+    // Flat mirrors of the scene's own (as in Radiance, those of instances relay no source images).
+    bool isPlanarMirror(const SurfaceId& id) const {
+        return id.instance < 0 && id.surface >= 0 && surfaceMirror_[id.surface] >= 0;
+    }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
 
 private:
     void checkTypes() const;
     void addSources();
+    void addSurfaceLight(const Surface& surface, const SurfaceId& id);
+    void addPlacedLights();
     void addAntimatter();
     void addMirrors();
 
@@ -54,7 +64,10 @@ private:
     std::vector<std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Emitter>> emitters_;
     std::unique_ptr<SceneGeometry> geometry_;
-    std::vector<int> surfaceMaterial_, surfaceLight_;
+    std::vector<int> surfaceMaterial_, surfaceLight_;  // per surface of the geometry (own: surfaceLight_ only)
+    // Sources of instanced octrees, per placement: their surfaces moved into the world, and their lights.
+    std::deque<Surface> placedLightSurfaces_;
+    std::unordered_map<uint64_t, int> placedLight_;  // (placement, surface) → light
     std::vector<Light> lights_;
     std::vector<int> distant_;  // indices into lights_
     std::unordered_map<int, std::vector<int>> antimatter_;

@@ -49,8 +49,7 @@ int Scene::findModifier(const std::string& name) const {
     return it == lastDefinition.end() ? -1 : it->second;
 }
 
-// The modifier named `name` that object `object` refers to (Radiance's lastmod): the indexed one if it
-// is older, or else the latest one before it.
+// The indexed (latest) definition when it is older than the object, else a search back from it.
 int Scene::modifierBefore(int object, const std::string& name) const {
     if (int indexed = findModifier(name); indexed < object) return indexed;
     while (--object >= 0)
