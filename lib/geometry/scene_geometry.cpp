@@ -1,6 +1,8 @@
 #include "geometry/scene_geometry.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/gtx/component_wise.hpp>
 #include <limits>
 
 #include "geometry/polygon.h"
@@ -222,6 +224,31 @@ bool SceneGeometry::hidden(const SurfaceId& id) const {
     return layout_.surfaces[id.surface].voidModifier;
 }
 
+// Whether a ray leaving a mesh triangle meets the triangle `id` of the same mesh that Embree proposes, decided
+// in double precision in the mesh's coordinates: not where it starts (triangles whose planes hold its origin,
+// to rounding, are the surface it leaves, as the triangles of one polygon are), and not at a neighbour of the
+// triangle it leaves unless it crosses that neighbour's plane inside it (Embree's float test claims points
+// near shared edges for either side). Rounding is relative to the coordinates' size: this holds at any scale.
+bool SceneGeometry::meetsMeshTriangle(const SurfaceId& id, const Ray& ray) const {
+    const SurfaceId& from = ray.leaving;
+    if (from.triangle < 0 || from.instance != id.instance) return true;
+    const Mesh& m = *meshOf(id);
+    const auto &tri = m.triangles[id.triangle], &left = m.triangles[from.triangle];
+    const dvec3* v[3] = {&m.vertices[tri[0]], &m.vertices[tri[1]], &m.vertices[tri[2]]};
+    Ray local = localRay(ray, id.instance);
+    dvec3 n = glm::normalize(glm::cross(*v[1] - *v[0], *v[2] - *v[0]));
+    double height = glm::dot(n, local.org - *v[0]);
+    if (std::abs(height) <= 1e-12 * (glm::compMax(glm::abs(local.org)) + glm::compMax(glm::abs(*v[0])))) return false;
+    double t = -height / glm::dot(n, local.dir);
+    if (!(t > 0)) return false;  // behind the origin: Embree's float test saw it at t ≈ 0
+    bool neighbour = std::find_first_of(tri.begin(), tri.end(), left.begin(), left.end()) != tri.end();
+    if (!neighbour) return true;
+    dvec3 q = local.at(t);
+    for (int k = 0; k < 3; ++k)
+        if (glm::dot(glm::cross(*v[(k + 1) % 3] - *v[k], q - *v[k]), n) < 0) return false;
+    return true;
+}
+
 // The ray in a placement's prototype coordinates. Its direction is not normalized, so that distances along it
 // are the world's.
 Ray SceneGeometry::localRay(const Ray& ray, int placement) const {
@@ -240,7 +267,9 @@ void SceneGeometry::filterTriangle(const RTCFilterFunctionNArguments* args) {
         if (!args->valid[i]) continue;
         int placement = placementOf(RTCHitN_instID(args->hit, args->N, i, 0));
         SurfaceId id = g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
-        if (id == ctx->ray->leaving || g->owner->hidden(id)) args->valid[i] = 0;
+        bool meets = id != ctx->ray->leaving && !g->owner->hidden(id) &&
+                     (id.triangle < 0 || g->owner->meetsMeshTriangle(id, *ctx->ray));
+        if (!meets) args->valid[i] = 0;
     }
 }
 

@@ -67,6 +67,7 @@ private:
     void addPlacements();
     void computeBounds();
     bool hidden(const SurfaceId& id) const;
+    bool meetsMeshTriangle(const SurfaceId& id, const Ray& ray) const;
     Ray localRay(const Ray& ray, int placement) const;
     double exactPlaneHit(const Group& group, const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const;
     void interpolateMesh(const SurfaceId& id, const Ray& local, SurfaceHit& hit) const;
