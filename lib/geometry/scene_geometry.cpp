@@ -225,10 +225,11 @@ bool SceneGeometry::hidden(const SurfaceId& id) const {
 }
 
 // Whether a ray leaving a mesh triangle meets the triangle `id` of the same mesh that Embree proposes, decided
-// in double precision in the mesh's coordinates: not where it starts (triangles whose planes hold its origin,
-// to rounding, are the surface it leaves, as the triangles of one polygon are), and not at a neighbour of the
-// triangle it leaves unless it crosses that neighbour's plane inside it (Embree's float test claims points
-// near shared edges for either side). Rounding is relative to the coordinates' size: this holds at any scale.
+// in double precision in the mesh's coordinates. Triangles whose planes hold the ray's origin (to rounding)
+// are the surface it leaves, as the triangles of one polygon are; so is a neighbour of the triangle it leaves
+// that Embree's float test claims for a crossing outside it right by the origin (at a shared edge). Elsewhere
+// Embree's choice stands: its float test is watertight between triangles, a stricter one would not be.
+// Rounding is relative to the coordinates' size, so this holds at any scale.
 bool SceneGeometry::meetsMeshTriangle(const SurfaceId& id, const Ray& ray) const {
     const SurfaceId& from = ray.leaving;
     if (from.triangle < 0 || from.instance != id.instance) return true;
@@ -237,13 +238,13 @@ bool SceneGeometry::meetsMeshTriangle(const SurfaceId& id, const Ray& ray) const
     const dvec3* v[3] = {&m.vertices[tri[0]], &m.vertices[tri[1]], &m.vertices[tri[2]]};
     Ray local = localRay(ray, id.instance);
     dvec3 n = glm::normalize(glm::cross(*v[1] - *v[0], *v[2] - *v[0]));
+    double size = glm::compMax(glm::abs(local.org)) + glm::compMax(glm::abs(*v[0]));
     double height = glm::dot(n, local.org - *v[0]);
-    if (std::abs(height) <= 1e-12 * (glm::compMax(glm::abs(local.org)) + glm::compMax(glm::abs(*v[0])))) return false;
     double t = -height / glm::dot(n, local.dir);
-    if (!(t > 0)) return false;  // behind the origin: Embree's float test saw it at t ≈ 0
+    if (std::abs(height) <= 1e-12 * size || !(t > 0)) return false;
     bool neighbour = std::find_first_of(tri.begin(), tri.end(), left.begin(), left.end()) != tri.end();
-    if (!neighbour) return true;
     dvec3 q = local.at(t);
+    if (!neighbour || glm::length(q - local.org) > 1e-6 * size) return true;
     for (int k = 0; k < 3; ++k)
         if (glm::dot(glm::cross(*v[(k + 1) % 3] - *v[k], q - *v[k]), n) < 0) return false;
     return true;
