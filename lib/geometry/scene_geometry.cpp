@@ -224,29 +224,46 @@ bool SceneGeometry::hidden(const SurfaceId& id) const {
     return layout_.surfaces[id.surface].voidModifier;
 }
 
-// Whether a ray leaving a mesh triangle meets the triangle `id` of the same mesh that Embree proposes, decided
-// in double precision in the mesh's coordinates. Triangles whose planes hold the ray's origin (to rounding)
-// are the surface it leaves, as the triangles of one polygon are; so is a neighbour of the triangle it leaves
-// that Embree's float test claims for a crossing outside it right by the origin (at a shared edge). Elsewhere
-// Embree's choice stands: its float test is watertight between triangles, a stricter one would not be.
-// Rounding is relative to the coordinates' size, so this holds at any scale.
-bool SceneGeometry::meetsMeshTriangle(const SurfaceId& id, const Ray& ray) const {
-    const SurfaceId& from = ray.leaving;
-    if (from.triangle < 0 || from.instance != id.instance) return true;
+// The plane of a polygon or mesh triangle in its prototype's coordinates: its unit normal and a point of it.
+void SceneGeometry::plane(const SurfaceId& id, dvec3& normal, dvec3& point) const {
+    if (id.triangle < 0) {
+        const auto& poly = std::get<Polygon>(layout_.surfaces[id.surface].shape);
+        normal = poly.normal, point = poly.vertices[0];
+        return;
+    }
     const Mesh& m = *meshOf(id);
-    const auto &tri = m.triangles[id.triangle], &left = m.triangles[from.triangle];
-    const dvec3* v[3] = {&m.vertices[tri[0]], &m.vertices[tri[1]], &m.vertices[tri[2]]};
+    const auto& tri = m.triangles[id.triangle];
+    point = m.vertices[tri[0]];
+    normal = glm::normalize(glm::cross(m.vertices[tri[1]] - point, m.vertices[tri[2]] - point));
+}
+
+// Whether a ray leaving a surface meets the polygon or mesh triangle `id` that Embree's float test proposes,
+// decided in double precision in the prototype's coordinates. Planes that hold the ray's origin (to rounding)
+// are those of the surface it leaves or of neighbours that meet it there (a polygon's coplanar neighbour, the
+// next triangle of a mesh), crossed at the origin: not met. Nor is a neighbour of the mesh triangle it leaves
+// that Embree claims for a crossing outside it right by the origin, at their shared edge. Elsewhere Embree's
+// choice stands: its float test is watertight between triangles, a stricter one would not be. Rounding is
+// relative to the coordinates' size, so this holds at any scale.
+bool SceneGeometry::meetsFlat(const SurfaceId& id, const Ray& ray) const {
+    const SurfaceId& from = ray.leaving;
+    if (!from) return true;
     Ray local = localRay(ray, id.instance);
-    dvec3 n = glm::normalize(glm::cross(*v[1] - *v[0], *v[2] - *v[0]));
-    double size = glm::compMax(glm::abs(local.org)) + glm::compMax(glm::abs(*v[0]));
-    double height = glm::dot(n, local.org - *v[0]);
+    dvec3 n, a;
+    plane(id, n, a);
+    double size = glm::compMax(glm::abs(local.org)) + glm::compMax(glm::abs(a));
+    double height = glm::dot(n, local.org - a);
     double t = -height / glm::dot(n, local.dir);
     if (std::abs(height) <= 1e-12 * size || !(t > 0)) return false;
+    if (id.triangle < 0 || from.triangle < 0 || from.instance != id.instance) return true;
+    const Mesh& m = *meshOf(id);
+    const auto &tri = m.triangles[id.triangle], &left = m.triangles[from.triangle];
     bool neighbour = std::find_first_of(tri.begin(), tri.end(), left.begin(), left.end()) != tri.end();
     dvec3 q = local.at(t);
     if (!neighbour || glm::length(q - local.org) > 1e-6 * size) return true;
-    for (int k = 0; k < 3; ++k)
-        if (glm::dot(glm::cross(*v[(k + 1) % 3] - *v[k], q - *v[k]), n) < 0) return false;
+    for (int k = 0; k < 3; ++k) {
+        const dvec3 &v = m.vertices[tri[k]], &next = m.vertices[tri[(k + 1) % 3]];
+        if (glm::dot(glm::cross(next - v, q - v), n) < 0) return false;
+    }
     return true;
 }
 
@@ -268,8 +285,7 @@ void SceneGeometry::filterTriangle(const RTCFilterFunctionNArguments* args) {
         if (!args->valid[i]) continue;
         int placement = placementOf(RTCHitN_instID(args->hit, args->N, i, 0));
         SurfaceId id = g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
-        bool meets = id != ctx->ray->leaving && !g->owner->hidden(id) &&
-                     (id.triangle < 0 || g->owner->meetsMeshTriangle(id, *ctx->ray));
+        bool meets = id != ctx->ray->leaving && !g->owner->hidden(id) && g->owner->meetsFlat(id, *ctx->ray);
         if (!meets) args->valid[i] = 0;
     }
 }
@@ -318,20 +334,10 @@ void SceneGeometry::exactIntersect(const RTCIntersectFunctionNArguments* args) {
 
 // The exact distance to a flat surface's plane (Embree's float t only chose the triangle), and its normal,
 // in the ray's (prototype) coordinates.
-double SceneGeometry::exactPlaneHit(const Group& g, const SurfaceId& id, const Ray& local, float embreeT,
-                                    dvec3& normal) const {
-    double t;
-    if (g.mesh) {
-        const auto& tri = g.mesh->triangles[id.triangle];
-        const dvec3& a = g.mesh->vertices[tri[0]];
-        dvec3 n = glm::cross(g.mesh->vertices[tri[1]] - a, g.mesh->vertices[tri[2]] - a);
-        t = glm::dot(n, a - local.org) / glm::dot(n, local.dir);
-        normal = glm::normalize(n);
-    } else {
-        const auto& poly = std::get<Polygon>(layout_.surfaces[id.surface].shape);
-        t = poly.planeDistance(local);
-        normal = poly.normal;
-    }
+double SceneGeometry::exactPlaneHit(const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const {
+    dvec3 point;
+    plane(id, normal, point);
+    double t = glm::dot(normal, point - local.org) / glm::dot(normal, local.dir);
     return t > 0 && std::isfinite(t) ? t : embreeT;
 }
 
@@ -358,7 +364,7 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     SurfaceHit hit{0, dvec3(0), dvec3(0), g.idOf(rh.hit.geomID, rh.hit.primID, placement)};
     Ray local = localRay(ray, placement);
     dvec3 normal = ctx.exactNormal;
-    hit.t = rh.hit.geomID == kExactGeom ? ctx.exactT : exactPlaneHit(g, hit.surface, local, rh.ray.tfar, normal);
+    hit.t = rh.hit.geomID == kExactGeom ? ctx.exactT : exactPlaneHit(hit.surface, local, rh.ray.tfar, normal);
     hit.point = ray.at(hit.t);
     // Radiance turns normals with the placement's matrix, mirror included: a mirrored surface keeps its front
     // where its mirrored normal points.

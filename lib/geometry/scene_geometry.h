@@ -67,9 +67,10 @@ private:
     void addPlacements();
     void computeBounds();
     bool hidden(const SurfaceId& id) const;
-    bool meetsMeshTriangle(const SurfaceId& id, const Ray& ray) const;
+    void plane(const SurfaceId& id, dvec3& normal, dvec3& point) const;
+    bool meetsFlat(const SurfaceId& id, const Ray& ray) const;
     Ray localRay(const Ray& ray, int placement) const;
-    double exactPlaneHit(const Group& group, const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const;
+    double exactPlaneHit(const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const;
     void interpolateMesh(const SurfaceId& id, const Ray& local, SurfaceHit& hit) const;
     static void filterTriangle(const RTCFilterFunctionNArguments* args);
     static void exactBounds(const RTCBoundsFunctionArguments* args);
