@@ -6,9 +6,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "fuzz/mesh_invariants.h"
 #include "integrator/render_scene.h"
 #include "io/ray_reader.h"
 #include "scene/octree.h"
+#include "scene/mesh.h"
 #include "scene/reader.h"
 
 using namespace brume;
@@ -35,6 +37,57 @@ TEST(FuzzCorpus, SceneInputsAreReadOrRefusedCleanly) {
         try {
             readSceneText(scene, in, "fuzz.rad", {.allowCommands = false});
             RenderScene render(scene, MaterialSettings{});
+        } catch (const Error&) {
+        }
+    }
+    setWarningsEnabled(true);
+}
+
+namespace {
+// A mesh read from a seed, placed twice (once mirrored) and traced through: rays across it meet it or not,
+// cleanly.
+void traceThrough(const Mesh& mesh) {
+    Transform mirror = parseTransform(std::vector<std::string>{"-mx", "-t", "0", "0", "5"}).transform;
+    SceneLayout layout;
+    layout.prototypes.push_back(Prototype{0, 0, &mesh});
+    for (const Transform& t : {Transform{}, mirror}) layout.placements.push_back(Placement{0, t, t.inverse(), -1, -1, t});
+    SceneGeometry geometry(std::move(layout));
+    for (const dvec3& d : {dvec3(0, 0, -1), dvec3(0.3, 0.1, -1), dvec3(-1, 0.2, 0.1)}) {
+        Ray ray{geometry.boundsMax() + dvec3(0.5), glm::normalize(d)};
+        for (int bounce = 0; bounce < 4; ++bounce) {
+            auto hit = geometry.intersect(ray);
+            if (!hit) break;
+            ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
+        }
+    }
+}
+}  // namespace
+
+TEST(FuzzCorpus, CompiledMeshInputsAreReadOrRefusedCleanly) {
+    auto inputs = corpus("corpus_rtm");
+    ASSERT_FALSE(inputs.empty());
+    for (const std::string& bytes : inputs) {
+        Scene scene;
+        std::istringstream in(bytes);
+        try {
+            Mesh mesh = readRadianceMesh(scene, in, "fuzz.rtm");
+            fuzz::checkMesh(mesh, scene.objects.size());
+            traceThrough(mesh);
+        } catch (const Error&) {
+        }
+    }
+}
+
+TEST(FuzzCorpus, WavefrontInputsAreReadOrRefusedCleanly) {
+    setWarningsEnabled(false);
+    auto inputs = corpus("corpus_obj");
+    ASSERT_FALSE(inputs.empty());
+    for (const std::string& text : inputs) {
+        std::istringstream in(text);
+        try {
+            Mesh mesh = readWavefront(in, "fuzz.obj", [](const std::string& n) { return n.size() < 3 ? 0 : -1; });
+            fuzz::checkMesh(mesh, 1);
+            traceThrough(mesh);
         } catch (const Error&) {
         }
     }

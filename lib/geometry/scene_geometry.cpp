@@ -188,9 +188,14 @@ void SceneGeometry::addExactShapes(Group& g) {
     attach(g.scene, geom, kExactGeom);
 }
 
+// Placements beyond ±1e18, where Embree cannot trace in single precision, are left out.
 void SceneGeometry::addPlacements() {
     for (size_t p = 0; p < layout_.placements.size(); ++p) {
         const Placement& placement = layout_.placements[p];
+        if (!traceable(placement)) {
+            warn("an instance or mesh reaches beyond ±1e18, where rays cannot be traced; dropped");
+            continue;
+        }
         RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(geom, groups_[1 + placement.prototype].scene);
         float m[16];
@@ -201,17 +206,31 @@ void SceneGeometry::addPlacements() {
     }
 }
 
-// The world's box: its own surfaces' and the corners of each placed prototype's box.
+// The world box of a placement: the corners of its prototype's box, moved (empty for an empty prototype).
+void SceneGeometry::placedBounds(const Placement& p, dvec3& lo, dvec3& hi) const {
+    const Group& g = groups_[1 + p.prototype];
+    lo = dvec3(std::numeric_limits<double>::infinity()), hi = -lo;
+    if (g.lo.x > g.hi.x) return;
+    for (int corner = 0; corner < 8; ++corner) {
+        dvec3 c(corner & 1 ? g.hi.x : g.lo.x, corner & 2 ? g.hi.y : g.lo.y, corner & 4 ? g.hi.z : g.lo.z);
+        dvec3 w = p.transform.point(c);
+        lo = glm::min(lo, w), hi = glm::max(hi, w);
+    }
+}
+
+bool SceneGeometry::traceable(const Placement& p) const {
+    dvec3 lo, hi;
+    placedBounds(p, lo, hi);
+    return lo.x > hi.x || !(glm::compMax(glm::max(glm::abs(lo), glm::abs(hi))) > 1e18);
+}
+
+// The world's box: its own surfaces' and its placements'.
 void SceneGeometry::computeBounds() {
     lo_ = groups_[0].lo, hi_ = groups_[0].hi;
     for (const Placement& p : layout_.placements) {
-        const Group& g = groups_[1 + p.prototype];
-        if (g.lo.x > g.hi.x) continue;
-        for (int corner = 0; corner < 8; ++corner) {
-            dvec3 c(corner & 1 ? g.hi.x : g.lo.x, corner & 2 ? g.hi.y : g.lo.y, corner & 4 ? g.hi.z : g.lo.z);
-            dvec3 w = p.transform.point(c);
-            lo_ = glm::min(lo_, w), hi_ = glm::max(hi_, w);
-        }
+        dvec3 lo, hi;
+        placedBounds(p, lo, hi);
+        if (traceable(p)) lo_ = glm::min(lo_, lo), hi_ = glm::max(hi_, hi);
     }
 }
 

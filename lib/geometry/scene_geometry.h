@@ -65,6 +65,8 @@ private:
     void addMeshTriangles(Group& group);
     void addExactShapes(Group& group);
     void addPlacements();
+    void placedBounds(const Placement& placement, dvec3& lo, dvec3& hi) const;
+    bool traceable(const Placement& placement) const;
     void computeBounds();
     bool hidden(const SurfaceId& id) const;
     void plane(const SurfaceId& id, dvec3& normal, dvec3& point) const;

@@ -77,6 +77,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
             rec.point = hit->point;
             rec.normal = shadingAt(ray, *hit, false).normal;
             rec.surfaceNormal = hit->normal;
+            rec.uv = hit->uv;
             rec.surfaceObject = scene_.surfaceObject(hit->surface);
             rec.modifierObject = mat;
         }
@@ -164,6 +165,7 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
         record->point = hit->point;
         record->normal = sh.normal;
         record->surfaceNormal = hit->normal;
+        record->uv = hit->uv;
         record->surfaceObject = scene_.surfaceObject(hit->surface);
         record->modifierObject = mat;
     }

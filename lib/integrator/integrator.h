@@ -19,6 +19,7 @@ struct RayRecord {
     dvec3 point{0};                                                     // p
     dvec3 normal{0};             // n: the normal turned toward the ray (textures will perturb it)
     dvec3 surfaceNormal{0};      // N: the surface's own normal, as the scene orients it
+    glm::dvec2 uv{0};         // c: local (u, v) coordinates, Radiance's Lu Lv (meshes with uv)
     int surfaceObject = -1;   // s
     int modifierObject = -1;  // m
     Spectrum mirrored{0.f};   // r: the part of value that came by specular reflection

@@ -100,12 +100,13 @@ private:
         else if (k != "usemap" && k != "o") ++unrecognized_;
     }
 
+    // Three numbers, within ±1e18 (where rays can be traced).
     glm::dvec3 vector3(const std::vector<std::string>& w, const char* what) const {
         if (w.size() < 4) fail(what);
         glm::dvec3 v;
         for (int i = 0; i < 3; ++i) {
             auto x = number(w[i + 1]);
-            if (!x) fail(what);
+            if (!x || std::abs(*x) > 1e18) fail(what);
             v[i] = *x;
         }
         return v;
@@ -132,7 +133,10 @@ private:
     // One index of a corner: 1-based, or negative counting back from the last one given; 0 or empty is none.
     int index(std::string_view s, size_t count, bool required) const {
         long i = 0;
-        if (!s.empty() && std::from_chars(s.data(), s.data() + s.size(), i).ec != std::errc()) fail("bad vertex reference");
+        if (!s.empty()) {
+            auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), i);
+            if (ec != std::errc() || end != s.data() + s.size()) fail("bad vertex reference");
+        }
         if (i == 0 && !required) return -1;
         long resolved = i > 0 ? i - 1 : long(count) + i;
         if (i == 0 || resolved < 0 || resolved >= long(count)) fail("bad vertex reference");

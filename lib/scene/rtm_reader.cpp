@@ -14,6 +14,7 @@
 // local vertex, 2-byte material. A vertex id is patch · 256 + index. Materials count from the mesh's first
 // material object, -1 being void; a mesh with materials may have no void triangle.
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <limits>
 
 #include "scene/binary_input.h"
@@ -89,6 +90,7 @@ private:
         for (int i = 0; i < 3; ++i) header_.origin[i] = input_.textNumber("bounds");
         header_.size = input_.textNumber("bounds");
         if (!(header_.size > 1e-6)) input_.fail("illegal octree bounds in mesh");
+        if (glm::length(header_.origin) + header_.size > 1e18) input_.fail("mesh beyond ±1e18, where rays cannot be traced");
         for (int i = 0; i < 2; ++i) header_.uvMin[i] = input_.real(), header_.uvMax[i] = input_.real();
     }
 
