@@ -37,17 +37,17 @@ def write_terrain(path, triangles):
 
 
 def write_piece(path):
-    """An object to instance: a faceted ball of 40 x 20 quads on a box, 806 polygons."""
+    """An object to instance: a faceted ball of 120 x 60 quads on a box, 7206 polygons; returns the count."""
     with open(path, "w") as f:
         f.write("void plastic paint 0 0 5 .6 .5 .4 0 0\n")
-        rows, cols = 20, 40
+        rows, cols = 60, 120
         for r in range(rows):
             for c in range(cols):
                 def p(rr, cc):
                     t, a = math.pi * rr / rows, 2 * math.pi * cc / cols
                     return (.4 * math.sin(t) * math.cos(a), .4 * math.sin(t) * math.sin(a), .9 + .4 * math.cos(t))
                 q = [p(r, c), p(r + 1, c), p(r + 1, c + 1), p(r, c + 1)]
-                f.write(f"paint polygon f{r}_{c} 0 0 12 " + " ".join(f"{v:.6f}" for pt in q for v in pt) + "\n")
+                f.write(f"paint polygon f{r}_{c} 0 0 12 " + " ".join(f"{v:.12f}" for pt in q for v in pt) + "\n")
         box = [((-.5, -.5, 0), (.5, -.5, 0), (.5, .5, 0), (-.5, .5, 0)), ((-.5, -.5, .5), (-.5, .5, .5), (.5, .5, .5), (.5, -.5, .5))]
         for k, q in enumerate(box):
             f.write(f"paint polygon box{k} 0 0 12 " + " ".join(f"{v}" for pt in q for v in pt) + "\n")
@@ -57,6 +57,7 @@ def write_piece(path):
             c1 = (math.sqrt(.5) * math.cos(a1 + math.pi / 4), math.sqrt(.5) * math.sin(a1 + math.pi / 4))
             q = [(c0[0], c0[1], 0), (c1[0], c1[1], 0), (c1[0], c1[1], .5), (c0[0], c0[1], .5)]
             f.write(f"paint polygon side{k} 0 0 12 " + " ".join(f"{v:.6f}" for pt in q for v in pt) + "\n")
+    return rows * cols + 6
 
 
 LIGHT = "void light sky 0 0 3 1 1 1\nsky source sun 0 0 4 .3 .2 1 10\n"
@@ -96,7 +97,7 @@ def main():
     triangles = write_terrain(os.path.join(work, "terrain.obj"), args.triangles)
     with open(os.path.join(work, "terrain_obj.rad"), "w") as f:
         f.write(LIGHT + "void plastic ground 0 0 5 .3 .3 .3 0 0\nvoid mesh terrain 1 terrain.obj\n0\n0\n")
-    write_piece(os.path.join(work, "piece.rad"))
+    polygons = write_piece(os.path.join(work, "piece.rad"))
     side = math.ceil(math.sqrt(args.instances))
     with open(os.path.join(work, "crowd.rad"), "w") as f:
         f.write(LIGHT + "void plastic floor 0 0 5 .3 .3 .3 0 0\n")
@@ -131,10 +132,14 @@ def main():
     else:
         print("# Radiance not found: its columns and the instance scenes (which need its oconv) are skipped")
 
-    print(f"# mesh: {triangles} triangles with normals and uv; instances: {args.instances} of an octree of 806 polygons")
+    print(f"# mesh: {triangles} triangles with normals and uv; instances: {args.instances} of an octree of {polygons} polygons")
     print(f"{'scene':<11} {'program':<9} {'step':<12} {'wall s':>8} {'peak MB':>8}")
     for what, prog, step, s, mb in rows:
         print(f"{what:<11} {prog:<9} {step:<12} {s:>8.2f} {mb:>8.1f}")
+    peak = {(w, p, st): mb for w, p, st, _, mb in rows}
+    if ("instances", "Brume", "rtrace .rad") in peak:
+        extra = peak[("instances", "Brume", "rtrace .rad")] - peak[("1 instance", "Brume", "rtrace .rad")]
+        print(f"# Brume: {1024 * extra / (args.instances - 1):.1f} KB of peak memory per instance beyond the first")
     if not args.keep:
         shutil.rmtree(work)
 

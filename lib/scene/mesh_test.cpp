@@ -48,22 +48,21 @@ std::map<std::array<long, 3>, int> byCentroid(const Mesh& m) {
     return out;
 }
 
-}  // namespace
-
-// vault.rtm is obj2mesh's compilation of vault.obj: the same triangles (vertices within the 32-bit grid of the
-// mesh's cube, normals within Radiance's 4-byte direction code, (u, v) within their grid), wound the same
-// way, with the same materials.
-TEST(Mesh, RadianceMeshHoldsWhatObj2meshCompiledFromTheWavefrontFile) {
+// `rtm` is obj2mesh's compilation of `obj` (with the materials of `materials`): the same triangles (vertices
+// within the 32-bit grid of the mesh's cube, normals within Radiance's 4-byte direction code, (u, v) within
+// their grid), wound the same way, with the same materials.
+void expectCompilationOf(const std::string& dir, const std::string& obj, const std::string& rtm,
+                         const std::string& materials, size_t materialCount) {
     Scene rtmScene;
-    std::istringstream rtm(fileText(kDir + "vault.rtm"));
-    Mesh compiled = readRadianceMesh(rtmScene, rtm, "vault.rtm");
+    std::istringstream rtmText(fileText(dir + rtm));
+    Mesh compiled = readRadianceMesh(rtmScene, rtmText, rtm);
     Scene objScene;
-    std::istringstream materials(fileText(kDir + "materials.rad"));
-    readSceneText(objScene, materials, "materials.rad");
-    Mesh read = wavefront(fileText(kDir + "vault.obj"), [&](const std::string& n) { return objScene.findModifier(n); });
+    std::istringstream materialText(fileText(dir + materials));
+    readSceneText(objScene, materialText, materials);
+    Mesh read = wavefront(fileText(dir + obj), [&](const std::string& n) { return objScene.findModifier(n); });
 
     ASSERT_EQ(compiled.triangles.size(), read.triangles.size());
-    ASSERT_EQ(rtmScene.objects.size(), 2u);  // paint and tile, carried by the mesh
+    ASSERT_EQ(rtmScene.objects.size(), materialCount);  // carried by the mesh
     auto compiledAt = byCentroid(compiled);
     for (auto [key, t] : byCentroid(read)) {
         ASSERT_TRUE(compiledAt.count(key)) << "triangle " << t;
@@ -78,11 +77,19 @@ TEST(Mesh, RadianceMeshHoldsWhatObj2meshCompiledFromTheWavefrontFile) {
             bool smooth = !read.normals.empty() && read.normals[u] != glm::vec3(0);
             ASSERT_EQ(smooth, compiled.normals[v] != glm::vec3(0)) << "triangle " << t;
             if (smooth) EXPECT_LT(glm::length(read.normals[u] - compiled.normals[v]), 2e-4f);
-            ASSERT_EQ(std::isnan(read.uvs[u].x), std::isnan(compiled.uvs[v].x));  // the end caps have none
+            ASSERT_EQ(std::isnan(read.uvs[u].x), std::isnan(compiled.uvs[v].x));  // the vault's ends have none
             if (!std::isnan(read.uvs[u].x)) EXPECT_LT(glm::length(read.uvs[u] - compiled.uvs[v]), 1e-8);
         }
         EXPECT_EQ(objScene.objects[read.materials[t]].name, rtmScene.objects[compiled.materials[c]].name);
     }
+}
+
+}  // namespace
+
+// The vault of the Radiance comparison (one patch), and a grid whose triangles join two patches.
+TEST(Mesh, RadianceMeshHoldsWhatObj2meshCompiledFromTheWavefrontFile) {
+    expectCompilationOf(kDir, "vault.obj", "vault.rtm", "materials.rad", 2);
+    expectCompilationOf(std::string(BRUME_TEST_DATA) + "/mesh/", "grid.obj", "grid.rtm", "ground.rad", 1);
 }
 
 TEST(Mesh, WavefrontFacesTakeRelativeIndicesAndSplitPolygons) {

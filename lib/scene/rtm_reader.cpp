@@ -116,15 +116,16 @@ private:
         }
         if (flags & 2) readNormals(first, n);
         if (flags & 4) readUvs(first, n);
-        readLocalTriangles(uint32_t(patchStart_.size() - 1), n);
+        uint32_t patch = uint32_t(patchStart_.size() - 1);
+        readLocalTriangles(patch, n);
         for (int j = count(256, "joiner triangles"); j > 0; --j) {
             uint32_t a = uint32_t(input_.integer(4));
-            uint32_t b = local(n), c = local(n);
+            uint32_t b = local(patch, n), c = local(patch, n);
             add({a, b, c}, material());
         }
         for (int j = count(256, "double joiner triangles"); j > 0; --j) {
             uint32_t a = uint32_t(input_.integer(4)), b = uint32_t(input_.integer(4));
-            uint32_t c = local(n);
+            uint32_t c = local(patch, n);
             add({a, b, c}, material());
         }
     }
@@ -151,16 +152,17 @@ private:
         int count = this->count(512, "local triangles");
         std::vector<std::array<uint32_t, 3>> local(count);
         for (auto& t : local)
-            for (uint32_t& v : t) v = patch << 8 | this->local(n);
+            for (uint32_t& v : t) v = this->local(patch, n);
         bool each = input_.integer(2) > 1;
         int sole = each ? 0 : material();
         for (const auto& t : local) add({t[0], t[1], t[2]}, each ? material() : sole);
     }
 
-    uint32_t local(int n) {
+    // The id of a vertex of this patch (of n vertices) given by its 1-byte index.
+    uint32_t local(uint32_t patch, int n) {
         int v = input_.byte();
         if (v >= n) input_.fail("bad local triangle index");
-        return uint32_t(v);
+        return patch << 8 | uint32_t(v);
     }
 
     int material() {
