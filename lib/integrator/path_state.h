@@ -18,15 +18,15 @@ inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b
 inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat) {
     double along = glm::dot(hit.normal, ray.dir);
     bool backside = along > 0;
-    dvec3 n = hit.normal, turned = backside ? -n : n;
-    if (hit.perturbation == dvec3(0)) return Shading{hit.point, turned, ray.dir, std::abs(along), backside, flat, hit.t};
-    // Radiance's raynormal: the perturbed normal turns with the surface; where it would face away from the ray,
-    // it is mirrored across the plane normal to the ray.
-    n = glm::normalize(n + hit.perturbation);
-    if (backside) n = -n;
-    double cosine = -glm::dot(n, ray.dir);
-    if (cosine <= 0) n += 2 * cosine * ray.dir, cosine = -cosine;
-    return Shading{hit.point, n, ray.dir, cosine, backside, flat, hit.t};
+    Shading sh{hit.point, backside ? -hit.normal : hit.normal, ray.dir, std::abs(along), backside, flat, hit.t};
+    if (hit.perturbation == dvec3(0)) return sh;
+    // Radiance's raynormal: the perturbed normal turns with the surface; where it would face away from the
+    // ray, it is mirrored across the plane normal to the ray.
+    dvec3 n = glm::normalize(hit.normal + hit.perturbation);
+    sh.normal = backside ? -n : n;
+    sh.cosine = -glm::dot(sh.normal, ray.dir);
+    if (sh.cosine <= 0) sh.normal += 2 * sh.cosine * ray.dir, sh.cosine = -sh.cosine;
+    return sh;
 }
 }  // namespace integrator_detail
 
