@@ -57,6 +57,7 @@ void loadPlacedFiles(Scene& scene) {
         std::string key = o.type + (resolveNames ? "+materials:" : ":") + path;
         auto [it, added] = loaded.try_emplace(key, int(scene.placedFiles.size()));
         if (added) {
+            scene.sources.push_back(path);
             try {
                 scene.placedFiles.push_back(mesh ? appendMesh(scene, path, int(i), resolveNames) : appendOctree(scene, path));
             } catch (const Error& e) {
