@@ -9,8 +9,8 @@
 #include "fuzz/mesh_invariants.h"
 #include "integrator/render_scene.h"
 #include "io/ray_reader.h"
-#include "scene/octree.h"
 #include "scene/mesh.h"
+#include "scene/octree.h"
 #include "scene/reader.h"
 
 using namespace brume;
@@ -58,7 +58,8 @@ void traceThrough(const Mesh& mesh) {
     Transform mirror = parseTransform(std::vector<std::string>{"-mx", "-t", "0", "0", "5"}).transform;
     SceneLayout layout;
     layout.prototypes.push_back(Prototype{0, 0, &mesh});
-    for (const Transform& t : {Transform{}, mirror}) layout.placements.push_back(Placement{0, t, t.inverse(), -1, -1, t});
+    for (const Transform& t : {Transform{}, mirror})
+        layout.placements.push_back(Placement{0, t, t.inverse(), -1, -1, t});
     SceneGeometry geometry(std::move(layout));
     for (const dvec3& d : {dvec3(0, 0, -1), dvec3(0.3, 0.1, -1), dvec3(-1, 0.2, 0.1)}) {
         Ray ray{geometry.boundsMax() + dvec3(0.5), glm::normalize(d)};

@@ -36,8 +36,9 @@ std::vector<std::string> words(const std::string& line) {
     return out;
 }
 
-const char* kFloor = "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
-                     "grey polygon floor 0 0 12 -10 -10 -1.05  10 -10 -1.05  10 10 -1.05  -10 10 -1.05\n";
+const char* kFloor =
+    "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+    "grey polygon floor 0 0 12 -10 -10 -1.05  10 -10 -1.05  10 10 -1.05  -10 10 -1.05\n";
 
 // Relative difference of two spectra's first channels (both near zero agree).
 double relative(const Spectrum& a, const Spectrum& b) {
@@ -73,7 +74,8 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
     ASSERT_EQ(transforms.size(), 4u);
     for (size_t n = 0; n < transforms.size(); ++n) {
         std::vector<std::string> args = words(transforms[n]);
-        std::string instance = "void instance lamp " + std::to_string(args.size() + 1) + " lamp.oct " + transforms[n] + "\n0\n0\n";
+        std::string instance =
+            "void instance lamp " + std::to_string(args.size() + 1) + " lamp.oct " + transforms[n] + "\n0\n0\n";
         TestScene placed(kFloor + instance);
         TestScene xformed(kFloor + fileText(kDir + "lamp_" + std::to_string(n + 1) + ".rad"));
         RenderSettings s = fixedSeed();
@@ -82,8 +84,8 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
         Transform t = parseTransform(args).transform;
         // View rays from above onto the shelf, the ball, the disc, the post and the floor around, in the lamp's
         // own coordinates, and sensors on the floor.
-        const dvec3 targets[] = {{.1, .1, .5}, {-.15, -.12, .5}, {.8, 0, .3}, {.85, .05, .25}, {-.8, .25, .01},
-                                 {0, .75, .2}, {1.2, 1, 0}, {0, 0, -1.05}, {.7, -.7, -1.05}, {-1.5, .3, -1.05}};
+        const dvec3 targets[] = {{.1, .1, .5}, {-.15, -.12, .5}, {.8, 0, .3},   {.85, .05, .25},  {-.8, .25, .01},
+                                 {0, .75, .2}, {1.2, 1, 0},      {0, 0, -1.05}, {.7, -.7, -1.05}, {-1.5, .3, -1.05}};
         double lit = 0;  // by the lamp inside the instance
         for (size_t i = 0; i < std::size(targets); ++i) {
             dvec3 p = t.point(targets[i]), up = glm::normalize(t.vector(dvec3(0.1, 0.2, 1)));
@@ -92,7 +94,8 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
             EXPECT_LT(relative(ra.value, rb.value), 1e-6) << transforms[n] << " target " << i;
             dvec3 floor(p.x, p.y, -1.05);
             Spectrum ea = a.irradiance(floor, dvec3(0, 0, 1), i).value;
-            EXPECT_LT(relative(ea, b.irradiance(floor, dvec3(0, 0, 1), i).value), 1e-6) << transforms[n] << " sensor " << i;
+            EXPECT_LT(relative(ea, b.irradiance(floor, dvec3(0, 0, 1), i).value), 1e-6)
+                << transforms[n] << " sensor " << i;
             lit += ea[0];
         }
         EXPECT_GT(lit, 1) << transforms[n];
@@ -102,14 +105,17 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
 // A unit-square light above a floor: the floor as a mesh (from a Wavefront file, split into triangles) or as
 // polygons gives the same illuminance, the closed form of the square, to 1e-9.
 TEST(Instance, MeshFloorLitAsTheSamePolygons) {
-    TempFile obj("floor.obj", "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nv 0 -2 0\nv 0 2 0\n"
-                              "f 1 5 6 4\nf 5 2 3 6\n");
-    const std::string light = "void light lum 0 0 3 100 100 100\n"
-                              "lum polygon lamp 0 0 12 -.5 -.5 2  -.5 .5 2  .5 .5 2  .5 -.5 2\n"
-                              "void plastic white 0 0 5 .5 .5 .5 0 0\n";
+    TempFile obj("floor.obj",
+                 "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nv 0 -2 0\nv 0 2 0\n"
+                 "f 1 5 6 4\nf 5 2 3 6\n");
+    const std::string light =
+        "void light lum 0 0 3 100 100 100\n"
+        "lum polygon lamp 0 0 12 -.5 -.5 2  -.5 .5 2  .5 .5 2  .5 -.5 2\n"
+        "void plastic white 0 0 5 .5 .5 .5 0 0\n";
     TestScene mesh(light + "white mesh floor 1 " + obj.path.string() + "\n0\n0\n");
-    TestScene polygons(light + "white polygon a 0 0 12 -2 -2 0  0 -2 0  0 2 0  -2 2 0\n"
-                               "white polygon b 0 0 12 0 -2 0  2 -2 0  2 2 0  0 2 0\n");
+    TestScene polygons(light +
+                       "white polygon a 0 0 12 -2 -2 0  0 -2 0  0 2 0  -2 2 0\n"
+                       "white polygon b 0 0 12 0 -2 0  2 -2 0  2 2 0  0 2 0\n");
     Integrator a(mesh.render, fixedSeed()), b(polygons.render, fixedSeed());
     uint64_t index = 0;
     for (double x : {-1.7, -0.3, 0.0, 0.4, 1.9})
@@ -124,18 +130,21 @@ TEST(Instance, MeshFloorLitAsTheSamePolygons) {
 // perturbed normal (to 1e-6: a mesh keeps its normals in single precision). Seen from behind, the normal
 // turns with the surface.
 TEST(Instance, SmoothMeshShadesWithItsInterpolatedNormal) {
-    TempFile obj("tilted.obj", "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nvn .3 .1 1\n"
-                               "f 1//1 2//1 3//1 4//1\n");
-    TestScene t("void light lum 0 0 3 100 100 100\n"
-                "lum polygon lamp 0 0 12 -.5 -.5 2  -.5 .5 2  .5 .5 2  .5 -.5 2\n"
-                "void plastic white 0 0 5 .5 .5 .5 0 0\n"
-                "white mesh floor 1 " + obj.path.string() + "\n0\n0\n");
+    TempFile obj("tilted.obj",
+                 "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nvn .3 .1 1\n"
+                 "f 1//1 2//1 3//1 4//1\n");
+    TestScene t(
+        "void light lum 0 0 3 100 100 100\n"
+        "lum polygon lamp 0 0 12 -.5 -.5 2  -.5 .5 2  .5 .5 2  .5 -.5 2\n"
+        "void plastic white 0 0 5 .5 .5 .5 0 0\n"
+        "white mesh floor 1 " +
+        obj.path.string() + "\n0\n0\n");
     Integrator integrator(t.render, fixedSeed());
     dvec3 n = glm::normalize(dvec3(.3, .1, 1));
     for (double x : {-1.0, 0.2, 1.5}) {
         RayRecord hit = integrator.irradianceAtHit(dvec3(x, 0.3, 1), dvec3(0, 0, -1), 0);
-        EXPECT_NEAR(glm::dot(hit.normal, n), 1, 1e-6);       // -on: the perturbed normal
-        EXPECT_NEAR(hit.surfaceNormal.z, 1, 1e-12);          // -oN: the triangle's
+        EXPECT_NEAR(glm::dot(hit.normal, n), 1, 1e-6);  // -on: the perturbed normal
+        EXPECT_NEAR(hit.surfaceNormal.z, 1, 1e-12);     // -oN: the triangle's
         double sensor = integrator.irradiance(dvec3(x, 0.3, 0), n, 0).value[0];
         EXPECT_NEAR(hit.value[0], sensor, 1e-6 * sensor) << x;
     }
@@ -148,11 +157,15 @@ TEST(Instance, SmoothMeshShadesWithItsInterpolatedNormal) {
 TEST(Instance, ModifierOfAnInstanceOrMeshReplacesTheMaterialsInside) {
     ScopedRayPath path(kDir.c_str());
     TempFile voidObj("void.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
-    TestScene t(std::string(kFloor) + "void plastic red 0 0 5 .8 .1 .1 0 0\n"
+    TestScene t(std::string(kFloor) +
+                "void plastic red 0 0 5 .8 .1 .1 0 0\n"
                 "void instance own 5 lamp.oct -t 0 0 0\n0\n0\n"
                 "red instance painted 5 lamp.oct -t 5 0 0\n0\n0\n"
-                "void mesh unseen 5 " + voidObj.path.string() + " -t 0 5 0\n0\n0\n"
-                "red mesh seen 5 " + voidObj.path.string() + " -t 5 5 0\n0\n0\n");
+                "void mesh unseen 5 " +
+                voidObj.path.string() +
+                " -t 0 5 0\n0\n0\n"
+                "red mesh seen 5 " +
+                voidObj.path.string() + " -t 5 5 0\n0\n0\n");
     Integrator integrator(t.render, fixedSeed());
     auto names = [&](double x, double y) {
         RayRecord r = integrator.trace(dvec3(x + 0.2, y + 0.1, 3), dvec3(0, 0, -1), 0);

@@ -17,10 +17,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The unit box's floor, a ball and a post (as scene_geometry_test.cpp's, unscaled).
 std::vector<Surface> boxSurfaces(Scene& scene) {
-    std::istringstream in("void plastic p 0 0 5 .5 .5 .5 0 0\n"
-                          "p polygon floor 0 0 12 0 0 0 1 0 0 1 1 0 0 1 0\n"
-                          "p sphere ball 0 0 4 .5 .5 .5 .2\n"
-                          "p cylinder post 0 0 7 .8 .8 0 .8 .8 1 .05\n");
+    std::istringstream in(
+        "void plastic p 0 0 5 .5 .5 .5 0 0\n"
+        "p polygon floor 0 0 12 0 0 0 1 0 0 1 1 0 0 1 0\n"
+        "p sphere ball 0 0 4 .5 .5 .5 .2\n"
+        "p cylinder post 0 0 7 .8 .8 0 .8 .8 1 .05\n");
     readSceneText(scene, in, "t.rad");
     std::vector<Surface> out;
     for (int i = 1; i < int(scene.objects.size()); ++i) out.push_back(*makeSurface(scene, i));

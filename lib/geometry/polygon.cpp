@@ -46,7 +46,8 @@ using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 // Constraints may touch (seams, shared vertices) but not cross: a crossing would construct a new vertex, which
 // throws (and has no index into the polygon).
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds,
+                                                       CGAL::No_constraint_intersection_requiring_constructions_tag>;
 using Point2 = Kernel::Point_2;
 
 // The axis along which the normal is largest.

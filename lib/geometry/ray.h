@@ -29,7 +29,8 @@ struct Ray {
     SurfaceId leaving;
 
     Ray() = default;
-    Ray(const dvec3& o, const dvec3& d, double tMax = std::numeric_limits<double>::infinity(), SurfaceId leavingSurface = {})
+    Ray(const dvec3& o, const dvec3& d, double tMax = std::numeric_limits<double>::infinity(),
+        SurfaceId leavingSurface = {})
         : org(o), dir(d), tmax(tMax), leaving(leavingSurface) {}
 
     dvec3 at(double t) const { return org + t * dir; }

@@ -30,12 +30,13 @@ RTCScene newScene(RTCDevice device, bool compact) {
 RTCGeometry newTriangles(RTCDevice device, const std::vector<dvec3>& vertices, const unsigned* indices, size_t count,
                          bool shareIndices) {
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vb = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                           3 * sizeof(float), vertices.size()));
     for (size_t i = 0; i < vertices.size(); ++i)
         for (int k = 0; k < 3; ++k) vb[3 * i + k] = static_cast<float>(vertices[i][k]);
     if (shareIndices) {
-        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices, 0, 3 * sizeof(unsigned), count);
+        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices, 0, 3 * sizeof(unsigned),
+                                   count);
     } else {
         auto* ib = static_cast<unsigned*>(
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
@@ -105,8 +106,10 @@ void SceneGeometry::buildGroup(Group& g, int k) {
         g.firstSurface = p.firstSurface, g.endSurface = p.endSurface, g.mesh = p.mesh;
     }
     g.scene = newScene(device_, g.mesh != nullptr);
-    if (g.mesh) addMeshTriangles(g);
-    else addPolygons(g);
+    if (g.mesh)
+        addMeshTriangles(g);
+    else
+        addPolygons(g);
     addExactShapes(g);
     for (int s = g.firstSurface; s < g.endSurface; ++s) {
         dvec3 lo, hi;

@@ -30,9 +30,9 @@ struct SceneGeometry::Group {
     const SceneGeometry* owner = nullptr;
     RTCScene scene = nullptr;
     int firstSurface = 0, endSurface = 0;
-    const Mesh* mesh = nullptr;          // a mesh prototype: triangle primIDs are the mesh's triangles
-    std::vector<int> triangleSurface;    // polygon triangle primID → surface
-    std::vector<int> exactSurface;       // user-geometry primID → surface
+    const Mesh* mesh = nullptr;        // a mesh prototype: triangle primIDs are the mesh's triangles
+    std::vector<int> triangleSurface;  // polygon triangle primID → surface
+    std::vector<int> exactSurface;     // user-geometry primID → surface
     dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
 
     SurfaceId idOf(unsigned geomID, unsigned primID, int placement) const {

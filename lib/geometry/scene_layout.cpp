@@ -15,7 +15,8 @@ void addSurfaces(const Scene& scene, int begin, int end, bool prototype, std::ve
         auto surface = makeSurface(scene, i);
         if (!surface) continue;
         if (!withinTraceableRange(surface->shape)) {
-            warn(o.where.str() + ": " + o.type + " \"" + o.name + "\" reaches beyond ±1e18, where rays cannot be traced; dropped");
+            warn(o.where.str() + ": " + o.type + " \"" + o.name +
+                 "\" reaches beyond ±1e18, where rays cannot be traced; dropped");
             continue;
         }
         surface->voidModifier = o.modifier < 0;
@@ -42,13 +43,15 @@ public:
             const SceneObject& o = scene_.objects[i];
             if (o.type != "instance" && o.type != "mesh") continue;
             auto found = scene_.placedFileOf.find(i);
-            if (found == scene_.placedFileOf.end()) throw Error(o.where, "the file of " + o.type + " \"" + o.name + "\" is not loaded");
+            if (found == scene_.placedFileOf.end())
+                throw Error(o.where, "the file of " + o.type + " \"" + o.name + "\" is not loaded");
             int file = found->second;
             Placement p = placementOf(i, file, outer);
             layout_.placements.push_back(p);
             if (o.type == "mesh") continue;
             if (std::find(path_.begin(), path_.end(), file) != path_.end())
-                throw Error(o.where, "instance \"" + o.name + "\" holds itself (" + scene_.placedFiles[file].path + ")");
+                throw Error(o.where,
+                            "instance \"" + o.name + "\" holds itself (" + scene_.placedFiles[file].path + ")");
             path_.push_back(file);
             place(scene_.placedFiles[file].firstObject, scene_.placedFiles[file].endObject, p);
             path_.pop_back();
@@ -62,8 +65,10 @@ private:
         Placement p{file, t, t.inverse(), object, outer.modifierObject, outer.patternTransform};
         if (outer.modifierObject < 0) {
             // Radiance: the outermost modifier wins, and patterns then see the coordinates outside its object.
-            if (o.modifier >= 0) p.modifierObject = object, p.patternTransform = outer.transform;
-            else p.patternTransform = t;
+            if (o.modifier >= 0)
+                p.modifierObject = object, p.patternTransform = outer.transform;
+            else
+                p.patternTransform = t;
         }
         return p;
     }

@@ -129,8 +129,8 @@ void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSam
 // Sources seen in flat mirrors (Radiance's virtual sources, one relay): each source is sampled as seen
 // from the shading point's mirror image, and the shadow ray goes to the mirror and on to the source.
 // Sampled rays that take the same route count nothing (see emitterHit), so each path counts once.
-Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
-                                      Context& ctx) const {
+Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
+                                      const PathState& state, Context& ctx) const {
     Spectrum sum(0.f);
     for (const PlanarMirror& mirror : scene_.planarMirrors()) {
         double height = glm::dot(mirror.normal, sh.point) - mirror.offset;
@@ -177,8 +177,8 @@ Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState 
 
 // Along a shadow ray to surface `target` (or, for a source at infinity, out of the scene): the
 // transmission of what it crosses, black if blocked. `reached` receives the hit on the target.
-Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
-                                   SurfaceHit* reached) const {
+Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
+                                   PathState& state, SurfaceHit* reached) const {
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);

@@ -122,8 +122,8 @@ bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) con
 
 // Irradiance as Radiance computes it for -I and -i: the value of a white Lambertian sensor of reflectance π
 // facing n. It stands for a primary ray: in a ray tree, its rays are its children.
-Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance, Context& ctx,
-                                      RayRecord& rec, const dvec3& dir) const {
+Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance,
+                                      Context& ctx, RayRecord& rec, const dvec3& dir) const {
     Shading sh{point, n, -n, 1.0, false, false, distance};
     Lobes lobes;
     lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
@@ -295,8 +295,8 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
     return true;
 }
 
-Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state, Context& ctx,
-                           RayRecord* record, Spectrum* misEmission) const {
+Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                           Context& ctx, RayRecord* record, Spectrum* misEmission) const {
     Spectrum value(0.f);
     double strongest = 0;
     for (int k = 0; k < lobes.deltaCount; ++k) {

@@ -10,10 +10,10 @@ namespace {
 // Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
 const std::set<std::string> kPlannedTypes{
     "brightfunc", "colorfunc", "brightdata", "colordata", "colorpict", "brighttext", "colortext", "texfunc",
-    "texdata", "mixfunc", "mixdata", "mixpict", "mixtext", "mist", "spectrum", "specfile",
-    "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2", "WGMDfunc", "interface",
-    "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
-    "BRTDfunc"};
+    "texdata",    "mixfunc",   "mixdata",    "mixpict",   "mixtext",   "mist",       "spectrum",  "specfile",
+    "specfunc",   "specdata",  "specpict",   "plastic2",  "metal2",    "trans2",     "ashik2",    "WGMDfunc",
+    "interface",  "prism1",    "prism2",     "BSDF",      "aBSDF",     "plasfunc",   "metfunc",   "transfunc",
+    "plasdata",   "metdata",   "transdata",  "BRTDfunc"};
 
 // The key of a placed surface in RenderScene::placedLight_.
 uint64_t placedKey(int placement, int surface) { return uint64_t(uint32_t(placement)) << 32 | uint32_t(surface); }
@@ -26,8 +26,7 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
     materials_ = makeMaterials(scene, settings);
     emitters_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i)
-        if (isEmitterType(scene.objects[i].type))
-            emitters_[i] = std::make_unique<Emitter>(makeEmitter(scene, int(i)));
+        if (isEmitterType(scene.objects[i].type)) emitters_[i] = std::make_unique<Emitter>(makeEmitter(scene, int(i)));
     geometry_ = std::make_unique<SceneGeometry>(layoutScene(scene));
     for (const Surface& s : geometry_->surfaces()) surfaceMaterial_.push_back(scene.objects[s.object].modifier);
     addSources();
@@ -123,8 +122,10 @@ void RenderScene::addSurfaceLight(const Surface& surface, const SurfaceId& id) {
         throw Error(o.where, "illegal source shape " + o.type + " \"" + o.name +
                                  "\": light sources are polygons, rings, spheres, cylinders or sources");
     int light = static_cast<int>(lights_.size());
-    if (id.instance < 0) surfaceLight_[id.surface] = light;
-    else placedLight_[placedKey(id.instance, id.surface)] = light;
+    if (id.instance < 0)
+        surfaceLight_[id.surface] = light;
+    else
+        placedLight_[placedKey(id.instance, id.surface)] = light;
     lights_.emplace_back(surface, id, e);
 }
 

@@ -68,12 +68,16 @@ std::optional<std::string> formatOf(const std::string& line) {
 void skipOctreeNodes(BinaryInput& input, int objectSize) {
     for (size_t pending = 1; pending > 0; --pending) {
         switch (input.byte()) {
-            case 0: break;
+            case 0:
+                break;
             case 1:
                 for (size_t n = input.count(objectSize); n > 0; --n) input.integer(objectSize);
                 break;
-            case 2: pending += 8; break;
-            default: input.fail("damaged " + input.kind());
+            case 2:
+                pending += 8;
+                break;
+            default:
+                input.fail("damaged " + input.kind());
         }
     }
 }

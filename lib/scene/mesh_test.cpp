@@ -93,10 +93,11 @@ TEST(Mesh, RadianceMeshHoldsWhatObj2meshCompiledFromTheWavefrontFile) {
 }
 
 TEST(Mesh, WavefrontFacesTakeRelativeIndicesAndSplitPolygons) {
-    Mesh m = wavefront("v 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 1 0\nv 0 2 0\n"
-                       "vt 0 0\nvt 1 0\nvt 1 1\n"
-                       "f -5/1 -4/2 -3/3\n"  // relative indices, with uv
-                       "f 1 2 3 4 5\n");     // a concave pentagon
+    Mesh m = wavefront(
+        "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 1 0\nv 0 2 0\n"
+        "vt 0 0\nvt 1 0\nvt 1 1\n"
+        "f -5/1 -4/2 -3/3\n"  // relative indices, with uv
+        "f 1 2 3 4 5\n");     // a concave pentagon
     ASSERT_EQ(m.triangles.size(), 1u + 3u);
     EXPECT_TRUE(m.normals.empty());
     ASSERT_EQ(m.uvs.size(), m.vertices.size());
@@ -119,7 +120,8 @@ TEST(Mesh, WavefrontNormalsFollowObj2mesh) {
     Mesh turned = wavefront("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn .1 0 -1\nvn 0 .1 -1\nf 1//1 2//2 3//1\n");
     ASSERT_EQ(turned.triangles.size(), 1u);
     const auto& t = turned.triangles[0];
-    glm::dvec3 n = glm::cross(turned.vertices[t[1]] - turned.vertices[t[0]], turned.vertices[t[2]] - turned.vertices[t[0]]);
+    glm::dvec3 n =
+        glm::cross(turned.vertices[t[1]] - turned.vertices[t[0]], turned.vertices[t[2]] - turned.vertices[t[0]]);
     EXPECT_LT(n.z, 0);
     EXPECT_NEAR(glm::length(turned.normals[t[0]]), 1.0, 1e-6);
 }
@@ -164,8 +166,9 @@ TEST(Mesh, TruncatedRadianceMeshesAreErrors) {
 // Two instances of one octree and two meshes of one file load each file once; their objects follow the scene's.
 TEST(Mesh, PlacedFilesLoadOncePerFile) {
     test::ScopedRayPath path(kDir.c_str());
-    Scene scene = test::sceneFromText("void mesh a 1 vault.rtm\n0\n0\nvoid mesh b 5 vault.rtm -t 1 0 0\n0\n0\n"
-                                      "void instance c 1 table.oct\n0\n0\nvoid instance d 2 table.oct -mx\n0\n0\n");
+    Scene scene = test::sceneFromText(
+        "void mesh a 1 vault.rtm\n0\n0\nvoid mesh b 5 vault.rtm -t 1 0 0\n0\n0\n"
+        "void instance c 1 table.oct\n0\n0\nvoid instance d 2 table.oct -mx\n0\n0\n");
     ASSERT_EQ(scene.placedFiles.size(), 2u);
     EXPECT_EQ(scene.ownObjects(), 4u);
     EXPECT_EQ(scene.placedFileOf.at(0), scene.placedFileOf.at(1));

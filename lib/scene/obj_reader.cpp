@@ -30,7 +30,8 @@ struct Corner {
 
 struct CornerHash {
     size_t operator()(const Corner& c) const {
-        return std::hash<uint64_t>()((uint64_t(uint32_t(c.v)) << 32) ^ (uint64_t(uint32_t(c.vt)) << 16) ^ uint32_t(c.vn));
+        return std::hash<uint64_t>()((uint64_t(uint32_t(c.v)) << 32) ^ (uint64_t(uint32_t(c.vt)) << 16) ^
+                                     uint32_t(c.vn));
     }
 };
 
@@ -91,13 +92,20 @@ private:
         const std::string& k = w[0];
         if (k[0] == '#') return;
         ++statements_;
-        if (k == "v") positions_.push_back(vector3(w, "bad vertex"));
-        else if (k == "vn") normal(w);
-        else if (k == "vt") texture(w);
-        else if (k == "f") face(w);
-        else if (k == "usemtl") material_ = w.size() > 1 ? w[1] : "";
-        else if (k == "g") group_ = w.size() > 1 ? w[1] : "";
-        else if (k != "usemap" && k != "o") ++unrecognized_;
+        if (k == "v")
+            positions_.push_back(vector3(w, "bad vertex"));
+        else if (k == "vn")
+            normal(w);
+        else if (k == "vt")
+            texture(w);
+        else if (k == "f")
+            face(w);
+        else if (k == "usemtl")
+            material_ = w.size() > 1 ? w[1] : "";
+        else if (k == "g")
+            group_ = w.size() > 1 ? w[1] : "";
+        else if (k != "usemap" && k != "o")
+            ++unrecognized_;
     }
 
     // Three numbers, within ±1e18 (where rays can be traced).
@@ -146,7 +154,9 @@ private:
     Corner corner(std::string_view s) const {
         size_t a = s.find('/'), b = a == std::string_view::npos ? a : s.find('/', a + 1);
         auto part = [&](size_t from, size_t to) {
-            return from == std::string_view::npos ? std::string_view() : s.substr(from + 1, to == std::string_view::npos ? to : to - from - 1);
+            return from == std::string_view::npos
+                       ? std::string_view()
+                       : s.substr(from + 1, to == std::string_view::npos ? to : to - from - 1);
         };
         return {index(s.substr(0, a), positions_.size(), true), index(part(a, b), textures_.size(), false),
                 index(part(b, std::string_view::npos), normals_.size(), false)};
@@ -202,7 +212,8 @@ private:
             double d[3] = {glm::dot(n, glm::dvec3(normals_[a.vn])), glm::dot(n, glm::dvec3(normals_[b.vn])),
                            glm::dot(n, glm::dvec3(normals_[c.vn]))};
             bool behind = d[0] < 0 && d[1] < 0 && d[2] < 0;
-            bool flat = behind ? std::max({d[0], d[1], d[2]}) <= -kFlatCosine : std::min({d[0], d[1], d[2]}) >= kFlatCosine;
+            bool flat =
+                behind ? std::max({d[0], d[1], d[2]}) <= -kFlatCosine : std::min({d[0], d[1], d[2]}) >= kFlatCosine;
             if (flat) a.vn = b.vn = c.vn = -1;
             if (behind) std::swap(a, c);
         }

@@ -49,17 +49,20 @@ void loadPlacedFiles(Scene& scene) {
         SourceLocation where = o.where;
         bool mesh = o.type == "mesh";
         if (o.strings.empty() || !o.integers.empty() || !o.reals.empty())
-            throw Error(where, "bad arguments for " + o.type + " \"" + o.name + "\": expected a file name and a transform");
+            throw Error(where,
+                        "bad arguments for " + o.type + " \"" + o.name + "\": expected a file name and a transform");
         std::string path = findOnRayPath(o.strings[0]);
         if (path.empty())
-            throw Error(where, std::string("cannot find ") + (mesh ? "mesh" : "octree") + " file \"" + o.strings[0] + "\"");
+            throw Error(where,
+                        std::string("cannot find ") + (mesh ? "mesh" : "octree") + " file \"" + o.strings[0] + "\"");
         bool resolveNames = mesh && o.modifier < 0 && isWavefrontName(path);
         std::string key = o.type + (resolveNames ? "+materials:" : ":") + path;
         auto [it, added] = loaded.try_emplace(key, int(scene.placedFiles.size()));
         if (added) {
             scene.sources.push_back(path);
             try {
-                scene.placedFiles.push_back(mesh ? appendMesh(scene, path, int(i), resolveNames) : appendOctree(scene, path));
+                scene.placedFiles.push_back(mesh ? appendMesh(scene, path, int(i), resolveNames)
+                                                 : appendOctree(scene, path));
             } catch (const Error& e) {
                 throw Error(where, e.what());
             }

@@ -84,13 +84,15 @@ private:
         auto header = readInfoHeader(in_, SIZE_MAX);
         if (!header) input_.fail("not a mesh (no information header)");
         for (const std::string& line : *header)
-            if (auto format = formatOf(line); format && *format != kFormat) input_.fail("not a mesh (FORMAT=" + *format + ")");
+            if (auto format = formatOf(line); format && *format != kFormat)
+                input_.fail("not a mesh (FORMAT=" + *format + ")");
         objectSize_ = int(input_.integer(2) - kMagic);
         if (objectSize_ <= 0 || objectSize_ > kMaxObjectSize) input_.fail("incompatible mesh format");
         for (int i = 0; i < 3; ++i) header_.origin[i] = input_.textNumber("bounds");
         header_.size = input_.textNumber("bounds");
         if (!(header_.size > 1e-6)) input_.fail("illegal octree bounds in mesh");
-        if (glm::length(header_.origin) + header_.size > 1e18) input_.fail("mesh beyond ±1e18, where rays cannot be traced");
+        if (glm::length(header_.origin) + header_.size > 1e18)
+            input_.fail("mesh beyond ±1e18, where rays cannot be traced");
         for (int i = 0; i < 2; ++i) header_.uvMin[i] = input_.real(), header_.uvMax[i] = input_.real();
     }
 
@@ -190,7 +192,8 @@ private:
         if (mesh_.triangles.empty()) input_.fail("mesh has no triangles");
         // Patches without normals or uv after ones with them.
         if (!mesh_.normals.empty()) mesh_.normals.resize(mesh_.vertices.size());
-        if (!mesh_.uvs.empty()) mesh_.uvs.resize(mesh_.vertices.size(), glm::dvec2(std::numeric_limits<double>::quiet_NaN()));
+        if (!mesh_.uvs.empty())
+            mesh_.uvs.resize(mesh_.vertices.size(), glm::dvec2(std::numeric_limits<double>::quiet_NaN()));
         return std::move(mesh_);
     }
 

@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     (void)quiet;
     std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
     try {
-        brume::Mesh mesh = brume::readWavefront(in, "fuzz.obj", [](const std::string& n) { return n.size() < 3 ? 0 : -1; });
+        brume::Mesh mesh =
+            brume::readWavefront(in, "fuzz.obj", [](const std::string& n) { return n.size() < 3 ? 0 : -1; });
         brume::fuzz::checkMesh(mesh, 1);
     } catch (const brume::Error&) {
         // Rejecting bad input with a message is the expected outcome.
