@@ -76,9 +76,13 @@ void expectCompilationOf(const std::string& dir, const std::string& obj, const s
             EXPECT_LT(glm::length(read.vertices[u] - compiled.vertices[v]), 1e-9);
             bool smooth = !read.normals.empty() && read.normals[u] != glm::vec3(0);
             ASSERT_EQ(smooth, compiled.normals[v] != glm::vec3(0)) << "triangle " << t;
-            if (smooth) EXPECT_LT(glm::length(read.normals[u] - compiled.normals[v]), 2e-4f);
+            if (smooth) {
+                EXPECT_LT(glm::length(read.normals[u] - compiled.normals[v]), 2e-4f);
+            }
             ASSERT_EQ(std::isnan(read.uvs[u].x), std::isnan(compiled.uvs[v].x));  // the vault's ends have none
-            if (!std::isnan(read.uvs[u].x)) EXPECT_LT(glm::length(read.uvs[u] - compiled.uvs[v]), 1e-8);
+            if (!std::isnan(read.uvs[u].x)) {
+                EXPECT_LT(glm::length(read.uvs[u] - compiled.uvs[v]), 1e-8);
+            }
         }
         EXPECT_EQ(objScene.objects[read.materials[t]].name, rtmScene.objects[compiled.materials[c]].name);
     }

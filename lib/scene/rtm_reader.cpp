@@ -54,12 +54,6 @@ struct Header {
     double uvMin[2], uvMax[2];
 };
 
-// Triangles as read: vertex ids and mesh-relative materials, resolved once all patches are in.
-struct RawTriangle {
-    uint32_t vertex[3];
-    int material;
-};
-
 class RtmReader {
 public:
     RtmReader(Scene& scene, std::istream& in, const std::string& name)
@@ -174,21 +168,16 @@ private:
         return firstMaterial_ + int(m);
     }
 
-    void add(RawTriangle t, int material) {
-        t.material = material;
-        raw_.push_back(t);
+    // A triangle as read: its vertex ids, resolved to indices once all patches are in (resolve()).
+    void add(std::array<uint32_t, 3> ids, int material) {
+        mesh_.triangles.push_back(ids);
+        mesh_.materials.push_back(material);
     }
 
     // Vertex ids to indices, now that every patch is known (joiners may refer to later patches).
     Mesh resolve() {
-        mesh_.triangles.reserve(raw_.size());
-        mesh_.materials.reserve(raw_.size());
-        for (const RawTriangle& t : raw_) {
-            std::array<uint32_t, 3> tri;
-            for (int k = 0; k < 3; ++k) tri[k] = index(t.vertex[k]);
-            mesh_.triangles.push_back(tri);
-            mesh_.materials.push_back(t.material);
-        }
+        for (auto& t : mesh_.triangles)
+            for (uint32_t& v : t) v = index(v);
         if (mesh_.triangles.empty()) input_.fail("mesh has no triangles");
         // Patches without normals or uv after ones with them.
         if (!mesh_.normals.empty()) mesh_.normals.resize(mesh_.vertices.size());
@@ -212,7 +201,6 @@ private:
     Header header_{};
     int objectSize_ = 0, firstMaterial_ = 0, materialCount_ = 0;
     std::vector<uint32_t> patchStart_;  // index of each patch's first vertex
-    std::vector<RawTriangle> raw_;
     Mesh mesh_;
 };
 
