@@ -7,8 +7,10 @@
 #include <sstream>
 
 #include "fuzz/exercise_cal.h"
+#include "fuzz/mesh_invariants.h"
 #include "integrator/render_scene.h"
 #include "io/ray_reader.h"
+#include "scene/mesh.h"
 #include "scene/octree.h"
 #include "scene/reader.h"
 
@@ -24,22 +26,68 @@ std::vector<std::string> corpus(const std::string& name) {
     }
     return inputs;
 }
-}  // namespace
 
-TEST(FuzzCorpus, SceneInputsAreReadOrRefusedCleanly) {
-    setWarningsEnabled(false);
-    auto inputs = corpus("corpus_scene");
+// Runs `read` on every input of a seed corpus, without warnings; rejection with a message is fine.
+template <class Read>
+void replay(const std::string& name, Read read) {
+    auto inputs = corpus(name);
     ASSERT_FALSE(inputs.empty());
-    for (const std::string& text : inputs) {
-        Scene scene;
-        std::istringstream in(text);
+    setWarningsEnabled(false);
+    for (const std::string& input : inputs) {
+        std::istringstream in(input);
         try {
-            readSceneText(scene, in, "fuzz.rad", {.allowCommands = false});
-            RenderScene render(scene, MaterialSettings{});
+            read(in);
         } catch (const Error&) {
         }
     }
     setWarningsEnabled(true);
+}
+}  // namespace
+
+TEST(FuzzCorpus, SceneInputsAreReadOrRefusedCleanly) {
+    replay("corpus_scene", [](std::istream& in) {
+        Scene scene;
+        readSceneText(scene, in, "fuzz.rad", {.allowCommands = false});
+        RenderScene render(scene, MaterialSettings{});
+    });
+}
+
+namespace {
+// A mesh read from a seed, placed twice (once mirrored) and traced through: rays across it meet it or not,
+// cleanly.
+void traceThrough(const Mesh& mesh) {
+    Transform mirror = parseTransform(std::vector<std::string>{"-mx", "-t", "0", "0", "5"}).transform;
+    SceneLayout layout;
+    layout.prototypes.push_back(Prototype{0, 0, &mesh});
+    for (const Transform& t : {Transform{}, mirror})
+        layout.placements.push_back(Placement{0, t, t.inverse(), -1, -1, t});
+    SceneGeometry geometry(std::move(layout));
+    for (const dvec3& d : {dvec3(0, 0, -1), dvec3(0.3, 0.1, -1), dvec3(-1, 0.2, 0.1)}) {
+        Ray ray{geometry.boundsMax() + dvec3(0.5), glm::normalize(d)};
+        for (int bounce = 0; bounce < 4; ++bounce) {
+            auto hit = geometry.intersect(ray);
+            if (!hit) break;
+            ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
+        }
+    }
+}
+}  // namespace
+
+TEST(FuzzCorpus, CompiledMeshInputsAreReadOrRefusedCleanly) {
+    replay("corpus_rtm", [](std::istream& in) {
+        Scene scene;
+        Mesh mesh = readRadianceMesh(scene, in, "fuzz.rtm");
+        fuzz::checkMesh(mesh, scene.objects.size());
+        traceThrough(mesh);
+    });
+}
+
+TEST(FuzzCorpus, WavefrontInputsAreReadOrRefusedCleanly) {
+    replay("corpus_obj", [](std::istream& in) {
+        Mesh mesh = readWavefront(in, "fuzz.obj", [](const std::string& n) { return n.size() < 3 ? 0 : -1; });
+        fuzz::checkMesh(mesh, 1);
+        traceThrough(mesh);
+    });
 }
 
 TEST(FuzzCorpus, RayInputsEndCleanly) {

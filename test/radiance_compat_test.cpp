@@ -19,13 +19,15 @@
 
 #include "integrator/integrator.h"
 #include "scene/reader.h"
+#include "scene_text.h"
 
 using namespace brume;
 
 namespace {
 
-const std::string kDir = std::string(BRUME_TEST_DATA) + "/radiance/";
-const std::string kPatternDir = std::string(BRUME_TEST_DATA) + "/patterns/";
+const std::string kRoom = std::string(BRUME_TEST_DATA) + "/radiance/";
+const std::string kInstances = std::string(BRUME_TEST_DATA) + "/radiance_instances/";
+const std::string kPatterns = std::string(BRUME_TEST_DATA) + "/patterns/";
 
 using Rgb = std::array<double, 3>;
 
@@ -35,7 +37,7 @@ struct LabelledRay {
 };
 
 // "label x y z dx dy dz" lines; '#' starts a comment line.
-std::vector<LabelledRay> readRays(const std::string& name, const std::string& dir = kDir) {
+std::vector<LabelledRay> readRays(const std::string& dir, const std::string& name) {
     std::ifstream in(dir + name);
     EXPECT_TRUE(in) << "cannot open " << name;
     std::vector<LabelledRay> rays;
@@ -52,7 +54,7 @@ std::vector<LabelledRay> readRays(const std::string& name, const std::string& di
 }
 
 // "label v1 v2 ..." lines: the values after the label (three, or six with standard errors).
-std::map<std::string, std::vector<double>> readReference(const std::string& name, const std::string& dir = kDir) {
+std::map<std::string, std::vector<double>> readReference(const std::string& dir, const std::string& name) {
     std::ifstream in(dir + name);
     EXPECT_TRUE(in) << "cannot open " << name;
     std::map<std::string, std::vector<double>> values;
@@ -91,26 +93,22 @@ RenderSettings referenceSettings(double specularThreshold = 1) {
     return s;
 }
 
-// The scenes, read once for all tests.
-const Scene& room() {
-    static const Scene scene = loadScene({kDir + "materials.rad"});
-    return scene;
+// A scene file of `dir`, the files it places (and function files, data files, pictures) found there.
+Scene sceneIn(const std::string& dir, const std::string& file) {
+    test::ScopedRayPath path(dir.c_str());
+    return loadScene({dir + file});
 }
 
-// Its function files, data files and picture are found along RAYPATH, as Radiance finds them.
-const Scene& patternScene() {
-    static const Scene scene = [] {
-        setenv("RAYPATH", kPatternDir.c_str(), 1);
-        return loadScene({kPatternDir + "patterns.rad"});
-    }();
+const Scene& room() {
+    static const Scene scene = sceneIn(kRoom, "materials.rad");
     return scene;
 }
 
 // The mean of `runs` independent estimates of each ray (its value, or irradiance for sensors).
 enum class Mode { View, Sensor, IrradianceAtHit };  // rtrace, rtrace -I, rtrace -i
 
-std::vector<Rgb> brumeMeans(const std::vector<LabelledRay>& rays, Mode mode, int runs, const RenderSettings& s,
-                            std::vector<Rgb>* standardErrors = nullptr, const Scene& scene = room()) {
+std::vector<Rgb> brumeMeans(const Scene& scene, const std::vector<LabelledRay>& rays, Mode mode, int runs,
+                            const RenderSettings& s, std::vector<Rgb>* standardErrors = nullptr) {
     RenderScene render(scene, s.materials);
     Integrator integrator(render, s);
     std::vector<Rgb> mean(rays.size()), sem(rays.size());
@@ -191,13 +189,13 @@ constexpr int kRuns = 128;  // estimates averaged per ray
 }  // namespace
 
 // Brume's means for the rays of `rayFile` against Radiance's values in `referenceFile`: each ray within
-// kPerRay, all within kRms.
-void expectAgreement(const char* rayFile, size_t atLeast, Mode mode, const char* referenceFile,
-                     const std::string& dir = kDir, const Scene& scene = room(), int runs = kRuns) {
-    auto rays = readRays(rayFile, dir);
+// `perRay`, all within kRms.
+void expectAgreement(const std::string& dir, const Scene& scene, const char* rayFile, size_t atLeast, Mode mode,
+                     const char* referenceFile, double perRay = kPerRay, int runs = kRuns) {
+    auto rays = readRays(dir, rayFile);
     ASSERT_GE(rays.size(), atLeast);
-    auto brume = brumeMeans(rays, mode, runs, referenceSettings(), nullptr, scene);
-    Comparison c = compare(rays, brume, readReference(referenceFile, dir), kPerRay);
+    auto brume = brumeMeans(scene, rays, mode, runs, referenceSettings());
+    Comparison c = compare(rays, brume, readReference(dir, referenceFile), perRay);
     EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
     if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
 }
@@ -207,20 +205,22 @@ void expectAgreement(const char* rayFile, size_t atLeast, Mode mode, const char*
 // and a patterned sky. Tolerances as above; there are no penumbrae at the rays, so the agreement is closer.
 TEST(RadianceCompat, PatternsTexturesAndMixturesAgreeWithRadiance) {
     // rays.txt: 118 view rays; 8 estimates each suffice, the scene's direct light being nearly exact.
-    expectAgreement("rays.txt", 110, Mode::View, "reference.txt", kPatternDir, patternScene(), 8);
+    test::ScopedRayPath path(kPatterns.c_str());  // the function files, data files and picture are there
+    Scene scene = loadScene({kPatterns + "patterns.rad"});
+    expectAgreement(kPatterns, scene, "rays.txt", 110, Mode::View, "reference.txt", kPerRay, 8);
 }
 
 TEST(RadianceCompat, ViewRaysAgreeWithRadianceForEveryMaterial) {
-    expectAgreement("rays.txt", 90, Mode::View, "reference_rays.txt");  // rays.txt: 99 view rays
+    expectAgreement(kRoom, room(), "rays.txt", 90, Mode::View, "reference_rays.txt");  // rays.txt: 99 view rays
 }
 
 // rtrace -i: irradiance where each view ray first meets an opaque surface, sources at their radiance.
 TEST(RadianceCompat, IrradianceAtFirstOpaqueHitAgreesWithRadiance) {
-    expectAgreement("rays.txt", 90, Mode::IrradianceAtHit, "reference_irradiance_at_hit.txt");
+    expectAgreement(kRoom, room(), "rays.txt", 90, Mode::IrradianceAtHit, "reference_irradiance_at_hit.txt");
 }
 
 TEST(RadianceCompat, SensorIrradianceAgreesWithRadiance) {
-    expectAgreement("sensors.txt", 60, Mode::Sensor, "reference_sensors.txt");  // sensors.txt: 70 points
+    expectAgreement(kRoom, room(), "sensors.txt", 60, Mode::Sensor, "reference_sensors.txt");  // sensors.txt: 70 points
 }
 
 // Rough specular surfaces above -st 0.15 (metal spec 0.9, plastic spec 0.2) reflect by sampled rays. The
@@ -228,14 +228,14 @@ TEST(RadianceCompat, SensorIrradianceAgreesWithRadiance) {
 // Tolerance: 4 combined standard errors (chance) plus 2.5% of the value (Radiance's highlight
 // approximations above, the same as in the deterministic runs).
 TEST(RadianceCompat, SampledGlossyReflectionAgreesWithRadianceMonteCarlo) {
-    auto all = readRays("rays.txt");
-    auto reference = readReference("reference_glossy.txt");
+    auto all = readRays(kRoom, "rays.txt");
+    auto reference = readReference(kRoom, "reference_glossy.txt");
     std::vector<LabelledRay> rays;
     for (const auto& r : all)
         if (reference.count(r.label)) rays.push_back(r);
     ASSERT_GE(rays.size(), 7u);
     std::vector<Rgb> sem;
-    auto brume = brumeMeans(rays, Mode::View, 4000, referenceSettings(0.15), &sem);
+    auto brume = brumeMeans(room(), rays, Mode::View, 4000, referenceSettings(0.15), &sem);
     for (size_t i = 0; i < rays.size(); ++i) {
         const auto& ref = reference[rays[i].label];
         ASSERT_EQ(ref.size(), 6u) << rays[i].label;
@@ -245,4 +245,29 @@ TEST(RadianceCompat, SampledGlossyReflectionAgreesWithRadianceMonteCarlo) {
                 << rays[i].label << " channel " << c << " (σ " << sigma << ")";
         }
     }
+}
+
+// test/data/radiance_instances: a compiled mesh with smooth normals, uv and two materials, placed with its
+// materials and with a modifier, scaled, mirrored and rotated; an octree placed by instances with and without
+// a modifier, mirrored; instances within an instance. Its README.md says how the references were made.
+// Each ray within 1%: these scenes keep Radiance's approximations out (see make_reference.sh).
+TEST(RadianceCompat, MeshesAndInstancesAgreeWithRadiance) {
+    Scene scene = sceneIn(kInstances, "scene.rad");
+    expectAgreement(kInstances, scene, "rays.txt", 25, Mode::View, "reference_rays.txt", 0.01);
+    expectAgreement(kInstances, scene, "sensors.txt", 10, Mode::Sensor, "reference_sensors.txt", 0.01);
+}
+
+// The same scene with the Wavefront file in place of the mesh obj2mesh compiled from it (its usemtl names
+// taking the materials obj2mesh was given) gives the same values: the faces split along the same diagonals,
+// normals and (u, v) as obj2mesh makes them.
+TEST(RadianceCompat, WavefrontMeshAgreesWithItsCompiledMesh) {
+    auto contents = [](const std::string& file) {
+        std::ifstream in(kInstances + file);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    std::string text = contents("materials.rad") + contents("scene.rad");
+    for (size_t at; (at = text.find("vault.rtm")) != std::string::npos;) text.replace(at, 9, "vault.obj");
+    test::ScopedRayPath path(kInstances.c_str());
+    Scene scene = test::sceneFromText(text);
+    expectAgreement(kInstances, scene, "rays.txt", 25, Mode::View, "reference_rays.txt", 0.01);
 }

@@ -134,6 +134,29 @@ TEST_F(RtraceCli, SceneErrorsNameFileAndLineAndWriteNothing) {
     EXPECT_EQ(r.err.rfind("rtrace: bad.rad:3: ", 0), 0u) << r.err;
 }
 
+// A mesh read straight from a Wavefront file: -oc prints its (u, v) where the ray meets it, -os the mesh.
+TEST_F(RtraceCli, MeshHitsPrintTheirLocalCoordinates) {
+    writeScene("floor.obj",
+               "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+               "f 1/1 2/2 3/3 4/4\n");
+    writeScene("mesh.rad", "void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey mesh floor 1 floor.obj\n0\n0\n");
+    Output r = rtrace("-h -ab 0 -ocs mesh.rad", "0.3 0.2 1 0 0 -1\n");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "5.750000e-01\t5.500000e-01\tfloor\t\n");
+}
+
+// A damaged mesh or octree file is an error naming the object that places it and the file, never a crash.
+TEST_F(RtraceCli, DamagedMeshFilesAreErrors) {
+    writeScene("cut.rtm",
+               "#?RADIANCE\nFORMAT=Radiance_tmesh\n\n\x01\x43"
+               "0");
+    writeScene("cut.rad", "void plastic grey 0 0 5 .5 .5 .5 0 0\n\ngrey mesh m 1 cut.rtm\n0\n0\n");
+    Output r = rtrace("cut.rad", "0 0 1 0 0 -1\n");
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "rtrace: cut.rad:3: cut.rtm: truncated mesh\n");
+}
+
 TEST_F(RtraceCli, PlannedTypesAreRefusedByName) {
     writeScene("medium.rad", "void mist m 0 0 0\nm sphere s 0 0 4 0 0 0 1\n");
     Output r = rtrace("medium.rad", "");

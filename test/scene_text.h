@@ -1,9 +1,12 @@
 // Helpers for tests that build scenes from .rad text and compute with the library.
 #pragma once
+#include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "integrator/integrator.h"
+#include "scene/placed_files.h"
 #include "scene/reader.h"
 
 namespace brume::test {
@@ -12,6 +15,7 @@ inline Scene sceneFromText(const std::string& text) {
     Scene scene;
     std::istringstream in(text);
     readSceneText(scene, in, "test.rad");
+    loadPlacedFiles(scene);
     return scene;
 }
 
@@ -20,6 +24,19 @@ struct TestScene {
     Scene scene;
     RenderScene render;
     TestScene(const std::string& text, const MaterialSettings& m = {}) : scene(sceneFromText(text)), render(scene, m) {}
+};
+
+// Sets RAYPATH for the life of the object, restoring it afterwards.
+class ScopedRayPath {
+public:
+    explicit ScopedRayPath(const char* value) {
+        if (const char* old = std::getenv("RAYPATH")) old_ = old;
+        value ? setenv("RAYPATH", value, 1) : unsetenv("RAYPATH");
+    }
+    ~ScopedRayPath() { old_ ? setenv("RAYPATH", old_->c_str(), 1) : unsetenv("RAYPATH"); }
+
+private:
+    std::optional<std::string> old_;
 };
 
 // Reproducible settings (the same seed every run).

@@ -44,13 +44,21 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+// Constraints may touch (seams, shared vertices) but not cross: a crossing would construct a new vertex, which
+// throws (and has no index into the polygon).
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds,
+                                                       CGAL::No_constraint_intersection_requiring_constructions_tag>;
 using Point2 = Kernel::Point_2;
+
+// The axis along which the normal is largest.
+int dominantAxis(const dvec3& n) {
+    dvec3 a = glm::abs(n);
+    return a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+}
 
 // The polygon's vertices in 2-D, dropping the coordinate along which the normal is largest.
 std::vector<Point2> project(const Polygon& poly) {
-    dvec3 an = glm::abs(poly.normal);
-    int drop = an.x > an.y ? (an.x > an.z ? 0 : 2) : (an.y > an.z ? 1 : 2);
+    int drop = dominantAxis(poly.normal);
     int u = (drop + 1) % 3, w = (drop + 2) % 3;
     std::vector<Point2> pts;
     for (const dvec3& p : poly.vertices) pts.emplace_back(p[u] - poly.vertices[0][u], p[w] - poly.vertices[0][w]);
@@ -76,15 +84,30 @@ bool isConvex(const Polygon& poly) {
     return true;
 }
 
+// A convex polygon cut into ears as Radiance's polyTriangulate cuts it, so that .obj faces split along the
+// diagonals obj2mesh chooses: the outline taken counter-clockwise about the normal's dominant axis, the first
+// ear at its last corner, each next ear starting at the corner after the one just cut off.
+std::vector<std::array<int, 3>> convexEars(const Polygon& poly) {
+    int n = static_cast<int>(poly.vertices.size());
+    bool reversed = poly.normal[dominantAxis(poly.normal)] < 0;
+    std::vector<int> ring(n);
+    for (int i = 0; i < n; ++i) ring[i] = reversed ? n - 1 - i : i;
+    std::vector<std::array<int, 3>> tris;
+    for (size_t at = ring.size() - 1; ring.size() > 2;) {
+        size_t a = at % ring.size(), b = (a + 1) % ring.size(), c = (b + 1) % ring.size();
+        tris.push_back({ring[a], ring[b], ring[c]});
+        ring.erase(ring.begin() + b);
+        at = b;
+    }
+    return tris;
+}
+
 }  // namespace
 
 std::vector<std::array<int, 3>> triangulate(const Polygon& poly) {
     std::vector<std::array<int, 3>> tris;
     int n = static_cast<int>(poly.vertices.size());
-    if (isConvex(poly)) {
-        for (int i = 1; i + 1 < n; ++i) tris.push_back({0, i, i + 1});
-        return tris;
-    }
+    if (isConvex(poly)) return convexEars(poly);
     std::vector<Point2> pts = project(poly);
     Cdt cdt;
     std::vector<Cdt::Vertex_handle> handles;

@@ -102,6 +102,32 @@ bool withinTraceableRange(const Shape& shape) {
     return std::visit(visit, shape);
 }
 
+Shape transformed(const Shape& shape, const Transform& t) {
+    double k = std::abs(t.scale);
+    struct {
+        const Transform& t;
+        double k;
+        Shape operator()(const Sphere& s) const { return Sphere{t.point(s.center), s.radius * k, s.inward}; }
+        Shape operator()(const Cone& c) const {
+            return Cone{t.point(c.base), t.point(c.top), c.baseRadius * k, c.topRadius * k, c.inward};
+        }
+        Shape operator()(const Ring& r) const {
+            return Ring{t.point(r.center), glm::normalize(t.vector(r.normal)), r.innerRadius * k, r.outerRadius * k};
+        }
+        Shape operator()(const Polygon& p) const {
+            std::vector<dvec3> v;
+            for (const dvec3& x : p.vertices) v.push_back(t.point(x));
+            if (t.mirrors()) std::reverse(v.begin(), v.end());  // the winding turns with the mirror image
+            std::string why;
+            auto poly = makePolygon(std::move(v), why);
+            if (!poly) throw Error("polygon degenerate once transformed (" + why + ")");
+            poly->triangles = triangulate(*poly);
+            return std::move(*poly);
+        }
+    } visit{t, k};
+    return std::visit(visit, shape);
+}
+
 double area(const Shape& shape) {
     using std::numbers::pi;
     struct {

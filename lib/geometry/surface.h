@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "geometry/shapes.h"
+#include "geometry/transform.h"
 #include "scene/scene.h"
 
 namespace brume {
@@ -14,6 +15,8 @@ using Shape = std::variant<Sphere, Cone, Ring, Polygon>;
 struct Surface {
     int object;  // index in Scene::objects
     Shape shape;
+    // Its own modifier is void: a surface of an instanced octree that only instances giving a modifier show.
+    bool voidModifier = false;
 };
 
 // sphere, bubble, polygon, cone, cup, cylinder, tube, ring.
@@ -25,6 +28,10 @@ std::optional<Surface> makeSurface(const Scene& scene, int index);
 
 // Whether the shape lies within ±1e18, the coordinates Embree can trace in single precision.
 bool withinTraceableRange(const Shape& shape);
+
+// The shape moved by `t` (uniform scale, rotation, mirroring); mirroring keeps its front where the mirrored
+// normal points, as Radiance's xform and instances do.
+Shape transformed(const Shape& shape, const Transform& t);
 
 // The surface's area in scene units squared.
 double area(const Shape& shape);

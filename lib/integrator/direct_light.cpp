@@ -27,12 +27,12 @@ bool Integrator::exactDirect(const PathState& state) const { return state.depth 
 // Every source sample. Diffuse lobes take their source light from here alone, as in Radiance (a few
 // stratified shadow rays beat thousands of diffuse rays that rarely find a small source); glossy lobes
 // that are also sampled by rays share it with them by the power heuristic.
-Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                             Context& ctx) const {
     Spectrum sum(0.f);
     for (const Light& light : scene_.lights()) {
         const Emitter& e = light.emitter();
-        if (!e.isDirectSource() || (surface >= 0 && light.surface() == surface)) continue;
+        if (!e.isDirectSource() || (surface && light.surface() == surface)) continue;
         // Diffuse light of a uniform source: its unoccluded value in closed form, less what the shadow rays
         // find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
         double closedForm = -1;
@@ -125,6 +125,10 @@ Spectrum Integrator::sourcePattern(const Light& light, const dvec3& point, const
                                    double distance) const {
     PatternHit hit{point, dir, normal, distance};
     int modifier = scene_.scene().objects[light.object()].modifier;
+    if (!light.isDistant()) {
+        hit.object = scene_.objectFrame(light.surface());
+        modifier = scene_.surfaceModifier(light.surface());
+    }
     return scene_.modifiers().resolve(modifier, hit, patternEvaluator(), 0.5).texturing.color;
 }
 
@@ -142,8 +146,8 @@ void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSam
 // Sources seen in flat mirrors (Radiance's virtual sources, one relay): each source is sampled as seen
 // from the shading point's mirror image, and the shadow ray goes to the mirror and on to the source.
 // Sampled rays that take the same route count nothing (see emitterHit), so each path counts once.
-Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
-                                      Context& ctx) const {
+Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
+                                      const PathState& state, Context& ctx) const {
     Spectrum sum(0.f);
     for (const PlanarMirror& mirror : scene_.planarMirrors()) {
         double height = glm::dot(mirror.normal, sh.point) - mirror.offset;
@@ -191,8 +195,8 @@ Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState 
 
 // Along a shadow ray to surface `target` (or, for a source at infinity, out of the scene): the
 // transmission of what it crosses, black if blocked. `reached` receives the hit on the target.
-Spectrum Integrator::transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
-                                   Context& ctx, SurfaceHit* reached) const {
+Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
+                                   PathState& state, Context& ctx, SurfaceHit* reached) const {
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);

@@ -59,7 +59,7 @@ RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t i
     RayRecord rec;
     rec.point = p;
     rec.normal = rec.surfaceNormal = n;
-    rec.value = sensorIrradiance(p + primaryTmin(p) * n, n, -1, 0.0, ctx, rec, -n);
+    rec.value = sensorIrradiance(p + primaryTmin(p) * n, n, SurfaceId{}, 0.0, ctx, rec, -n);
     return rec;
 }
 
@@ -85,7 +85,8 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
             rec.point = hit->point;
             rec.normal = sh.normal;
             rec.surfaceNormal = hit->normal;
-            rec.surfaceObject = scene_.geometry().surfaces()[hit->surface].object;
+            rec.uv = hit->uv;
+            rec.surfaceObject = scene_.surfaceObject(hit->surface);
             rec.modifierObject = mat;
         }
         const Emitter* e = mat >= 0 ? scene_.emitter(mat) : nullptr;
@@ -129,8 +130,8 @@ bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) con
 
 // Irradiance as Radiance computes it for -I and -i: the value of a white Lambertian sensor of reflectance π
 // facing n. It stands for a primary ray: in a ray tree, its rays are its children.
-Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, int surface, double distance, Context& ctx,
-                                      RayRecord& rec, const dvec3& dir) const {
+Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance,
+                                      Context& ctx, RayRecord& rec, const dvec3& dir) const {
     Shading sh{point, n, -n, 1.0, false, false, distance};
     Lobes lobes;
     lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
@@ -162,9 +163,7 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
                                    Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
     if (!hit) return escaped(ray, state, record, misEmission);
-    const Surface& surface = scene_.geometry().surfaces()[hit->surface];
-    Shading sh = shadingAt(ray, *hit,
-                           std::holds_alternative<Polygon>(surface.shape) || std::holds_alternative<Ring>(surface.shape));
+    Shading sh = shadingAt(ray, *hit, scene_.geometry().isFlat(hit->surface));
     if (state.kind == PathState::Kind::Primary && scene_.varies(hit->surface))
         return blendedHit(ray, *hit, sh, state, ctx, record, misEmission);
     int mat = shaderAt(ray, *hit, sh, ctx);
@@ -182,7 +181,7 @@ Spectrum Integrator::blendedHit(const Ray& ray, const SurfaceHit& hit, const Sha
     Spectrum sum(0.f);
     for (int k = 0; k < n; ++k) {
         Shading textured = sh;
-        applyTexturing(textured, branches.shader[k].texturing);
+        applyTexturing(textured, branches.shader[k].texturing, ray, hit);
         sum += shadeHit(ray, hit, textured, branches.shader[k].material, state, ctx, k == main ? record : nullptr,
                         misEmission) * float(branches.share[k]);
     }
@@ -201,7 +200,8 @@ Spectrum Integrator::shadeHit(const Ray& ray, const SurfaceHit& hit, const Shadi
         record->point = hit.point;
         record->normal = sh.normal;
         record->surfaceNormal = hit.normal;
-        record->surfaceObject = scene_.geometry().surfaces()[hit.surface].object;
+        record->uv = hit.uv;
+        record->surfaceObject = scene_.surfaceObject(hit.surface);
         record->modifierObject = mat;
     }
     if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, hit, sh, *e, state, ctx, record, misEmission);
@@ -227,8 +227,13 @@ int Integrator::shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Con
     if (!scene_.varies(hit.surface)) return scene_.materialObject(hit.surface);
     Shader s = scene_.modifiers().resolve(scene_.surfaceModifier(hit.surface), patternHit(ray, hit), patternEvaluator(),
                                           ctx.rng.uniform());
-    applyTexturing(sh, s.texturing);
+    applyTexturing(sh, s.texturing, ray, hit);
     return s.material;
+}
+
+// The hit as patterns see it: in an instance or mesh, in its frame, with the mesh's (u, v).
+PatternHit Integrator::patternHit(const Ray& ray, const SurfaceHit& hit) const {
+    return PatternHit{hit.point, ray.dir, hit.normal, hit.t, hit.uv.x, hit.uv.y, scene_.objectFrame(hit.surface)};
 }
 
 Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
@@ -356,8 +361,8 @@ bool Integrator::spawn(const PathState& parent, PathState& child, const Spectrum
     return true;
 }
 
-Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
-                           RayRecord* record, Spectrum* misEmission) const {
+Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                           Context& ctx, RayRecord* record, Spectrum* misEmission) const {
     Spectrum value(0.f);
     double strongest = 0;
     for (int k = 0; k < lobes.deltaCount; ++k) {
@@ -371,7 +376,7 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
         bool stillSampled = straight && state.kind == PathState::Kind::Sampled;
         if (!stillSampled) child.kind = PathState::Kind::Specular;
         if (state.kind == PathState::Kind::Sampled && !d.transmits && mirrorImagesOn() && scene_.isPlanarMirror(surface))
-            child.viaMirror = surface;
+            child.viaMirror = surface.surface;
         RayRecord childRecord;
         Spectrum share(0.f);
         Spectrum li = radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
@@ -402,7 +407,7 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, int surface, c
 }
 
 // One ray per sampled glossy lobe, weighted against next-event estimation where it meets a source.
-Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                             Context& ctx) const {
     Spectrum sum(0.f);
     dvec3 wo = -sh.dir;
@@ -436,7 +441,7 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, int surface, 
 // Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified
 // paths at the first bounce and one after it, for -ab bounces; beyond them Radiance's -av value. Sources
 // these paths meet are left out: next-event estimation counted them.
-Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                              Context& ctx) const {
     Spectrum sum(0.f);
     for (bool transmit : {false, true}) {

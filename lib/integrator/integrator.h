@@ -20,6 +20,7 @@ struct RayRecord {
     dvec3 point{0};                                                     // p
     dvec3 normal{0};             // n: the normal turned toward the ray (textures will perturb it)
     dvec3 surfaceNormal{0};      // N: the surface's own normal, as the scene orients it
+    glm::dvec2 uv{0};            // c: local (u, v) coordinates, Radiance's Lu Lv (meshes with uv)
     int surfaceObject = -1;   // s
     int modifierObject = -1;  // m
     Spectrum mirrored{0.f};   // r: the part of value that came by specular reflection
@@ -69,16 +70,19 @@ private:
                         const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, Context& ctx,
                          RayRecord* record, Spectrum* misEmission) const;
-    Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, int surface, double distance, Context& ctx,
-                              RayRecord& rec, const dvec3& dir) const;
-    Spectrum shade(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx,
-                   RayRecord* record, Spectrum* misEmission = nullptr) const;
+    Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance,
+                              Context& ctx, RayRecord& rec, const dvec3& dir) const;
+    Spectrum shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                   Context& ctx, RayRecord* record, Spectrum* misEmission = nullptr) const;
     Spectrum sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
                                 const SurfaceHit* hit, Spectrum* misEmission) const;
-    Spectrum direct(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum ambient(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum glossy(const Shading& sh, const Lobes& lobes, int surface, const PathState& state, Context& ctx) const;
-    Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, int surface, const PathState& state,
+    Spectrum direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                    Context& ctx) const;
+    Spectrum ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                     Context& ctx) const;
+    Spectrum glossy(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                    Context& ctx) const;
+    Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                               Context& ctx) const;
     Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
                       bool withDiffuse = true) const;
@@ -87,12 +91,13 @@ private:
                            double distance) const;
     int shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Context& ctx) const;
     PatternEvaluator& patternEvaluator() const;
+    PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) const;
     void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
                          const Spectrum& value) const;
     bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
     Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const;
-    Spectrum transmittance(Ray ray, int target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
-                           Context& ctx, SurfaceHit* reached) const;
+    Spectrum transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
+                           PathState& state, Context& ctx, SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;
     bool crossesAntimatter(int material, bool backside, PathState& state) const;
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,

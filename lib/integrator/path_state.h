@@ -15,32 +15,36 @@ constexpr double kDistantSourceDistance = 1e10;  // T of rays meeting sources at
 
 inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
 
-// The hit as a material sees it: the normal turned toward the ray, and which side was hit.
-inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat) {
+// The hit as a material sees it: the normal, perturbed (by mesh normals and a texture's `texture`), turned
+// toward the ray, and which side was hit.
+inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat, const dvec3& texture = dvec3(0)) {
     double along = glm::dot(hit.normal, ray.dir);
-    return Shading{hit.point, along > 0 ? -hit.normal : hit.normal, ray.dir, std::abs(along), along > 0, flat, hit.t};
-}
-
-// The hit as patterns see it.
-inline PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) { return PatternHit{hit.point, ray.dir, hit.normal, hit.t}; }
-
-// The patterns' colour, and the texture's perturbed normal as Radiance's raynormal makes it: kept on the
-// ray's side of the surface, its cosine at least 0.001.
-inline void applyTexturing(Shading& sh, const Texturing& t) {
-    sh.pattern = t.color;
-    if (glm::dot(t.perturbation, t.perturbation) <= 1e-12) return;
-    dvec3 n = sh.normal + (sh.backside ? -t.perturbation : t.perturbation);
+    bool backside = along > 0;
+    Shading sh{hit.point, backside ? -hit.normal : hit.normal, ray.dir, std::abs(along), backside, flat, hit.t};
+    dvec3 perturbation = hit.perturbation + texture;
+    if (perturbation == dvec3(0)) return sh;
+    // Radiance's raynormal: the perturbed normal turns with the surface; where it would face away from the
+    // ray, it is mirrored across the plane normal to the ray; its cosine is kept at least 0.001.
+    dvec3 n = hit.normal + perturbation;
     double len = glm::length(n);
-    if (!(len > 0) || !std::isfinite(len)) return;  // Radiance: "illegal normal perturbation", unperturbed
-    n /= len;
-    double cosine = -glm::dot(n, sh.dir);
+    if (!(len > 0) || !std::isfinite(len)) return sh;  // Radiance: "illegal normal perturbation", unperturbed
+    n = (backside ? -n : n) / len;
+    double cosine = -glm::dot(n, ray.dir);
     if (cosine <= 0) {
-        n += 2 * cosine * sh.dir;
+        n += 2 * cosine * ray.dir;
         cosine = -cosine;
     }
     sh.normal = n;
     sh.cosine = std::max(cosine, 0.001);
     sh.flat = false;
+    return sh;
+}
+
+// The patterns' colour, and the texture's perturbation added to the hit's own (mesh normals), as Radiance's
+// raytexture adds to the ray's before raynormal.
+inline void applyTexturing(Shading& sh, const Texturing& t, const Ray& ray, const SurfaceHit& hit) {
+    if (glm::dot(t.perturbation, t.perturbation) > 1e-12) sh = shadingAt(ray, hit, false, t.perturbation);
+    sh.pattern = t.color;
 }
 }  // namespace integrator_detail
 

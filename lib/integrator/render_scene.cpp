@@ -9,10 +9,12 @@ namespace {
 
 // Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
 const std::set<std::string> kPlannedTypes{
-    "mesh", "instance", "mist", "spectrum", "specfile",
-    "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2", "WGMDfunc", "interface",
-    "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
-    "BRTDfunc"};
+    "mist", "spectrum", "specfile", "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2",
+    "WGMDfunc", "interface", "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata",
+    "metdata", "transdata", "BRTDfunc"};
+
+// The key of a placed surface in RenderScene::placedLight_.
+uint64_t placedKey(int placement, int surface) { return uint64_t(uint32_t(placement)) << 32 | uint32_t(surface); }
 
 }  // namespace
 
@@ -23,24 +25,11 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
     materials_ = makeMaterials(scene, settings);
     emitters_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i)
-        if (isEmitterType(scene.objects[i].type))
-            emitters_[i] = std::make_unique<Emitter>(makeEmitter(scene, scene.objects[i]));
-
-    std::vector<Surface> surfaces;
-    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-        const SceneObject& o = scene.objects[i];
-        if (!isSurfaceType(o.type)) continue;
-        if (o.modifier < 0) continue;  // a void surface is never seen (Radiance drops it too)
-        auto surface = makeSurface(scene, i);
-        if (!surface) continue;
-        if (!withinTraceableRange(surface->shape)) {
-            warn(o.where.str() + ": " + o.type + " \"" + o.name + "\" reaches beyond ±1e18, where rays cannot be traced; dropped");
-            continue;
-        }
-        surfaces.push_back(std::move(*surface));
-        surfaceMaterial_.push_back(modifiers_->fixedMaterial(o.modifier));
-    }
-    geometry_ = std::make_unique<SceneGeometry>(std::move(surfaces));
+        if (isEmitterType(scene.objects[i].type)) emitters_[i] = std::make_unique<Emitter>(makeEmitter(scene, int(i)));
+    geometry_ = std::make_unique<SceneGeometry>(layoutScene(scene));
+    for (const Surface& s : geometry_->surfaces()) surfaceModifier_.push_back(scene.objects[s.object].modifier);
+    for (const Placement& p : geometry_->placements())
+        objectFrames_.push_back({p.patternTransform, p.patternTransform.inverse()});
     addSources();
     addMirrors();
 }
@@ -48,7 +37,8 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
 void RenderScene::checkTypes() const {
     for (const SceneObject& o : scene_.objects) {
         if (isSurfaceType(o.type) || isMaterialType(o.type) || isEmitterType(o.type) || o.type == "source" ||
-            o.type == "antimatter" || isPatternType(o.type) || isMixtureType(o.type))
+            o.type == "antimatter" || o.type == "instance" || o.type == "mesh" || isPatternType(o.type) ||
+            isMixtureType(o.type))
             continue;
         if (kPlannedTypes.count(o.type))
             throw Error(o.where, "type '" + o.type + "' (" + o.name + ") is not supported by Brume yet");
@@ -74,10 +64,10 @@ void RenderScene::addAntimatter() {
         std::vector<int>& cut = antimatter_[i];
         for (const std::string& name : o.strings) {
             if (name == "void") continue;
-            auto it = scene_.lastDefinition.find(name);
-            if (it == scene_.lastDefinition.end())
+            int modifier = scene_.modifierBefore(i, name);
+            if (modifier < 0)
                 throw Error(o.where, "undefined modifier \"" + name + "\" in antimatter \"" + o.name + "\"");
-            cut.push_back(it->second);
+            cut.push_back(modifier);
         }
     }
 }
@@ -85,18 +75,81 @@ void RenderScene::addAntimatter() {
 void RenderScene::addMirrors() {
     const auto& surfaces = geometry_->surfaces();
     surfaceMirror_.assign(surfaces.size(), -1);
-    for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
+    for (int s = 0; s < geometry_->ownSurfaces(); ++s) {
         // A patterned mirror varies over its surface: rays, not virtual sources, find what it reflects.
-        if (surfaceMaterial_[s] < 0 || varies(s)) continue;
-        const SceneObject& m = scene_.objects[surfaceMaterial_[s]];
+        int material = materialObject(SurfaceId{s});
+        if (material < 0 || varies(SurfaceId{s})) continue;
+        const SceneObject& m = scene_.objects[material];
         if (m.type != "mirror") continue;
         Spectrum rho(float(m.reals[0]), float(m.reals[1]), float(m.reals[2]));
         if (const auto* poly = std::get_if<Polygon>(&surfaces[s].shape)) {
             surfaceMirror_[s] = int(mirrors_.size());
-            mirrors_.push_back({s, poly->normal, poly->planeOffset, rho});
+            mirrors_.push_back({SurfaceId{s}, poly->normal, poly->planeOffset, rho});
         } else if (const auto* ring = std::get_if<Ring>(&surfaces[s].shape)) {
             surfaceMirror_[s] = int(mirrors_.size());
-            mirrors_.push_back({s, ring->normal, glm::dot(ring->normal, ring->center), rho});
+            mirrors_.push_back({SurfaceId{s}, ring->normal, glm::dot(ring->normal, ring->center), rho});
+        }
+    }
+}
+
+int RenderScene::surfaceModifier(const SurfaceId& id) const {
+    if (id.instance >= 0) {
+        const Placement& p = geometry_->placements()[id.instance];
+        if (p.modifierObject >= 0) return scene_.objects[p.modifierObject].modifier;
+        if (id.triangle >= 0) return geometry_->meshOf(id)->materials[id.triangle];
+    }
+    return surfaceModifier_[id.surface];
+}
+
+int RenderScene::surfaceObject(const SurfaceId& id) const {
+    if (id.instance >= 0) {
+        const Placement& p = geometry_->placements()[id.instance];
+        if (p.modifierObject >= 0) return p.modifierObject;
+        if (id.triangle >= 0) return p.object;
+    }
+    return geometry_->surfaces()[id.surface].object;
+}
+
+int RenderScene::lightOfSurface(const SurfaceId& id) const {
+    if (id.triangle >= 0) return -1;
+    if (id.instance < 0) return surfaceLight_[id.surface];
+    auto it = placedLight_.find(placedKey(id.instance, id.surface));
+    return it == placedLight_.end() ? -1 : it->second;
+}
+
+// An emitting surface (in world coordinates) becomes a light source, if its emitter makes it one.
+void RenderScene::addSurfaceLight(const Surface& surface, const SurfaceId& id) {
+    int material = materialObject(id);
+    const Emitter* e = material >= 0 ? emitters_[material].get() : nullptr;
+    if (!e || !e->isDirectSource() || e->radiance.maxValue() <= 1e-6f) return;
+    const SceneObject& o = scene_.objects[surface.object];
+    const auto* cone = std::get_if<Cone>(&surface.shape);
+    const auto* sphere = std::get_if<Sphere>(&surface.shape);
+    if ((cone && (cone->inward || cone->baseRadius != cone->topRadius)) || (sphere && sphere->inward))
+        throw Error(o.where, "illegal source shape " + o.type + " \"" + o.name +
+                                 "\": light sources are polygons, rings, spheres, cylinders or sources");
+    int light = static_cast<int>(lights_.size());
+    if (id.instance < 0)
+        surfaceLight_[id.surface] = light;
+    else
+        placedLight_[placedKey(id.instance, id.surface)] = light;
+    lights_.emplace_back(surface, id, e, varies(id));
+}
+
+// Unlike Radiance, which ignores them, sources inside instanced octrees light the scene: each placement's
+// emitting surfaces are moved into the world and sampled like the scene's own. (Emitting mesh triangles are
+// found only by the rays that meet them.)
+void RenderScene::addPlacedLights() {
+    const auto& placements = geometry_->placements();
+    for (int p = 0; p < static_cast<int>(placements.size()); ++p) {
+        const Prototype& prototype = geometry_->prototypes()[placements[p].prototype];
+        for (int s = prototype.firstSurface; s < prototype.endSurface; ++s) {
+            SurfaceId id{s, p};
+            int material = materialObject(id);
+            if (material < 0 || !emitters_[material]) continue;
+            const Surface& local = geometry_->surfaces()[s];
+            placedLightSurfaces_.push_back(Surface{local.object, transformed(local.shape, placements[p].transform)});
+            addSurfaceLight(placedLightSurfaces_.back(), id);
         }
     }
 }
@@ -104,19 +157,9 @@ void RenderScene::addMirrors() {
 void RenderScene::addSources() {
     const auto& surfaces = geometry_->surfaces();
     surfaceLight_.assign(surfaces.size(), -1);
-    for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
-        const Emitter* e = surfaceMaterial_[s] >= 0 ? emitters_[surfaceMaterial_[s]].get() : nullptr;
-        if (!e || !e->isDirectSource() || e->radiance.maxValue() <= 1e-6f) continue;
-        const SceneObject& o = scene_.objects[surfaces[s].object];
-        const auto* cone = std::get_if<Cone>(&surfaces[s].shape);
-        const auto* sphere = std::get_if<Sphere>(&surfaces[s].shape);
-        if ((cone && (cone->inward || cone->baseRadius != cone->topRadius)) || (sphere && sphere->inward))
-            throw Error(o.where, "illegal source shape " + o.type + " \"" + o.name +
-                                     "\": light sources are polygons, rings, spheres, cylinders or sources");
-        surfaceLight_[s] = static_cast<int>(lights_.size());
-        lights_.emplace_back(surfaces[s], s, e, varies(s));
-    }
-    for (int i = 0; i < static_cast<int>(scene_.objects.size()); ++i) {
+    for (int s = 0; s < geometry_->ownSurfaces(); ++s) addSurfaceLight(surfaces[s], SurfaceId{s});
+    addPlacedLights();
+    for (int i = 0; i < static_cast<int>(scene_.ownObjects()); ++i) {  // not in instances, as in Radiance
         const SceneObject& o = scene_.objects[i];
         if (o.type != "source" || o.modifier < 0) continue;
         if (!o.strings.empty() || !o.integers.empty() || o.reals.size() != 4)

@@ -1,6 +1,7 @@
 // The scene compiled for rendering: exact geometry in Embree, the material or emitter of every surface,
 // and the light sources for next-event estimation.
 #pragma once
+#include <deque>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -14,7 +15,7 @@ namespace brume {
 
 // A flat mirror, through which next-event estimation reaches sources by their mirror images (-dr).
 struct PlanarMirror {
-    int surface;
+    SurfaceId surface;
     dvec3 normal;  // its front
     double offset;  // normal · any point of its plane
     Spectrum reflectance;
@@ -29,14 +30,24 @@ public:
     const SceneGeometry& geometry() const { return *geometry_; }
     const std::vector<Light>& lights() const { return lights_; }
 
-    // The object that shades surface s: a material or an emitter, patterns skipped; -1 when a mixture
-    // decides at each hit, or when nothing does (a surface whose modifiers hold no material is invisible).
-    int materialObject(int surface) const { return surfaceMaterial_[surface]; }
-    // Whether patterns, textures or mixtures modify surface s: then modifiers().resolve(surfaceModifier(s), …)
+    // The modifier a surface's chain starts from: its own, or that of the instance or mesh placing it (see
+    // Placement::modifierObject), or a mesh triangle's material.
+    int surfaceModifier(const SurfaceId& id) const;
+    // The object that shades a surface: a material or an emitter, patterns skipped; -1 when a mixture decides
+    // at each hit, or when nothing does (a surface whose modifiers hold no material is invisible).
+    int materialObject(const SurfaceId& id) const { return modifiers_->fixedMaterial(surfaceModifier(id)); }
+    // Whether patterns, textures or mixtures modify a surface: then modifiers().resolve(surfaceModifier(id), …)
     // at each hit says what shades it.
-    bool varies(int surface) const { return modifiers_->varies(surfaceModifier(surface)); }
-    int surfaceModifier(int surface) const { return scene_.objects[geometry_->surfaces()[surface].object].modifier; }
+    bool varies(const SurfaceId& id) const { return modifiers_->varies(surfaceModifier(id)); }
     const ModifierChain& modifiers() const { return *modifiers_; }
+    // The frame of the instance or mesh a surface is placed by, as patterns see it (Radiance's object
+    // transform); nullptr for the scene's own surfaces.
+    const ObjectFrame* objectFrame(const SurfaceId& id) const {
+        return id.instance < 0 ? nullptr : &objectFrames_[id.instance];
+    }
+    // The object rtrace names for a surface (-os): the surface, or the instance or mesh whose modifier it
+    // takes, or the mesh of a triangle.
+    int surfaceObject(const SurfaceId& id) const;
     const Material* material(int object) const { return materials_[object].get(); }
     const Emitter* emitter(int object) const { return emitters_[object].get(); }
     // For an antimatter object: the modifiers whose surfaces it cuts away inside its volume (else nullptr).
@@ -44,16 +55,21 @@ public:
         auto it = antimatter_.find(object);
         return it == antimatter_.end() ? nullptr : &it->second;
     }
-    // The light that samples surface s, or -1.
-    int lightOfSurface(int surface) const { return surfaceLight_[surface]; }
+    // The light that samples a surface, or -1.
+    int lightOfSurface(const SurfaceId& id) const;
     const std::vector<PlanarMirror>& planarMirrors() const { return mirrors_; }
-    bool isPlanarMirror(int surface) const { return surfaceMirror_[surface] >= 0; }
+    // Flat mirrors of the scene's own (as in Radiance, those of instances relay no source images).
+    bool isPlanarMirror(const SurfaceId& id) const {
+        return id.instance < 0 && id.surface >= 0 && surfaceMirror_[id.surface] >= 0;
+    }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
 
 private:
     void checkTypes() const;
     void addSources();
+    void addSurfaceLight(const Surface& surface, const SurfaceId& id);
+    void addPlacedLights();
     void addAntimatter();
     void addMirrors();
 
@@ -62,7 +78,11 @@ private:
     std::vector<std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Emitter>> emitters_;
     std::unique_ptr<SceneGeometry> geometry_;
-    std::vector<int> surfaceMaterial_, surfaceLight_;
+    std::vector<int> surfaceModifier_, surfaceLight_;  // per surface of the geometry (own: surfaceLight_ only)
+    // Sources of instanced octrees, per placement: their surfaces moved into the world, and their lights.
+    std::deque<Surface> placedLightSurfaces_;
+    std::unordered_map<uint64_t, int> placedLight_;  // (placement, surface) → light
+    std::vector<ObjectFrame> objectFrames_;  // per placement
     std::vector<Light> lights_;
     std::vector<int> distant_;  // indices into lights_
     std::unordered_map<int, std::vector<int>> antimatter_;

@@ -123,7 +123,9 @@ void ValueWriter::fields(const std::string& spec, const OutputRay& ray) {
             case 'L':
             case 'X': real(length(r.firstLength)); break;
             case 'R': real(length(r.mirroredLength)); break;
-            case 'c': real(0), real(0); break;  // surface (u, v): none without meshes
+            case 'c':
+                real(r.uv.x), real(r.uv.y);
+                break;
             case 'p': reals(local ? &r.point.x : &ray.org.x, 3); break;
             case 'n':
             case 'N': {

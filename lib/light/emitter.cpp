@@ -4,7 +4,8 @@
 
 namespace brume {
 
-Emitter makeEmitter(const Scene& scene, const SceneObject& o) {
+Emitter makeEmitter(const Scene& scene, int index) {
+    const SceneObject& o = scene.objects[index];
     Emitter e;
     size_t reals = 3, maxStrings = 0;
     if (o.type == "glow") e.kind = Emitter::Kind::Glow, reals = 4;
@@ -24,10 +25,9 @@ Emitter makeEmitter(const Scene& scene, const SceneObject& o) {
         e.spotCosHalf = std::cos(std::min(angle, 2 * std::numbers::pi) / 2);
     }
     if (e.kind == Emitter::Kind::Illum && !o.strings.empty() && o.strings[0] != "void") {
-        auto it = scene.lastDefinition.find(o.strings[0]);
-        if (it == scene.lastDefinition.end())
+        e.alternate = scene.modifierBefore(index, o.strings[0]);
+        if (e.alternate < 0)
             throw Error(o.where, "undefined alternate material \"" + o.strings[0] + "\" for illum \"" + o.name + "\"");
-        e.alternate = it->second;
     }
     return e;
 }

@@ -29,8 +29,8 @@ struct Emitter {
     bool isDirectSource() const { return kind != Kind::Glow || glowRadius > 0; }
 };
 
-// The emitter described by scene object `o` (a light, spotlight, glow or illum). Throws Error on bad
-// arguments. `scene` resolves illum's alternate material.
-Emitter makeEmitter(const Scene& scene, const SceneObject& o);
+// The emitter described by scene object `index` (a light, spotlight, glow or illum). Throws Error on bad
+// arguments. An illum's alternate material is the latest modifier so named before it (Radiance's lastmod).
+Emitter makeEmitter(const Scene& scene, int index);
 
 }  // namespace brume

@@ -22,8 +22,8 @@ double sphereOneMinusCos(double r, double d) {
 }
 }  // namespace
 
-Light::Light(const Surface& surface, int surfaceIndex, const Emitter* emitter, bool patterned)
-    : shape_(&surface.shape), surface_(surfaceIndex), object_(surface.object), emitter_(emitter), patterned_(patterned) {
+Light::Light(const Surface& surface, SurfaceId id, const Emitter* emitter, bool patterned)
+    : shape_(&surface.shape), surface_(id), object_(surface.object), emitter_(emitter), patterned_(patterned) {
     area_ = area(surface.shape);
     size_ = std::sqrt(area_);
     if (const auto* s = std::get_if<Sphere>(shape_)) center_ = s->center, size_ = 2 * s->radius;

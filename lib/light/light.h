@@ -29,9 +29,9 @@ struct LightView {
 
 class Light {
 public:
-    // An emitting surface; `surface` is its index in SceneGeometry::surfaces(). A patterned source's radiance
+    // An emitting surface, in world coordinates; `id` tells it from others. A patterned source's radiance
     // varies over it and with direction: the integrator multiplies samples by its pattern.
-    Light(const Surface& surface, int surfaceIndex, const Emitter* emitter, bool patterned = false);
+    Light(const Surface& surface, SurfaceId id, const Emitter* emitter, bool patterned = false);
     // A source at infinity: unit direction and full cone angle in radians.
     Light(const dvec3& direction, double angle, const Emitter* emitter, int object, bool patterned = false);
 
@@ -52,9 +52,9 @@ public:
     // Uniform sources shaped as polygons, spheres or distant discs: unoccludedIrradiance may answer.
     bool hasClosedForm() const;
     bool patterned() const { return patterned_; }
-    bool isDistant() const { return surface_ < 0; }
+    bool isDistant() const { return !surface_; }
     const dvec3& direction() const { return direction_; }  // of a distant source
-    int surface() const { return surface_; }  // -1 for distant sources
+    const SurfaceId& surface() const { return surface_; }  // none for distant sources
     int object() const { return object_; }
     const Emitter& emitter() const { return *emitter_; }
     // Whether a ray in direction d that escapes the scene meets this distant source.
@@ -66,7 +66,7 @@ private:
     void pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const;
 
     const Shape* shape_ = nullptr;
-    int surface_ = -1;
+    SurfaceId surface_;
     int object_ = -1;
     const Emitter* emitter_;
     bool patterned_ = false;

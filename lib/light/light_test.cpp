@@ -43,7 +43,7 @@ TEST(Light, ClosedFormIrradianceMatchesSampling) {
         Surface{0, Sphere{dvec3(0.5, 0.3, 2), 0.4, false}},
     };
     for (const Surface& shape : shapes) {
-        Light light(shape, 0, &e);
+        Light light(shape, SurfaceId{0}, &e);
         for (dvec3 n : {dvec3(0, 0, 1), glm::normalize(dvec3(1, 0, 1)), glm::normalize(dvec3(0.3, -0.5, 1))}) {
             double closed = light.unoccludedIrradiance(dvec3(0), n);
             if (closed < 0) continue;

@@ -10,6 +10,12 @@
 
 namespace brume {
 
+// The frame of an instance or mesh, in which patterns on its surfaces work (Radiance's object transform).
+struct ObjectFrame {
+    Transform toWorld;
+    Transform toObject;  // its inverse
+};
+
 // The hit as Radiance's function files see it, in world coordinates (each pattern maps it into its own).
 struct PatternHit {
     dvec3 point;
@@ -17,7 +23,7 @@ struct PatternHit {
     dvec3 normal;          // of the surface as it is oriented, not turned toward the ray
     double distance = 0;   // T and Ts: from the ray's origin
     double u = 0, v = 0;   // Lu, Lv: local coordinates on meshes
-    const Transform* object = nullptr;  // object to world, for surfaces in instances and meshes
+    const ObjectFrame* object = nullptr;  // for surfaces in instances and meshes
 };
 
 // What the modifiers did to the hit so far (Radiance's pcol and pert).

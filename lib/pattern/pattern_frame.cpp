@@ -20,7 +20,7 @@ PatternFrame PatternFrame::fromArguments(const SceneObject& o, std::span<const s
 // Radiance's chanvalue(): directions and normals turned into the pattern's axes and kept unit length,
 // points moved, distances scaled; S, T, I, J, K describe the world-to-pattern map itself.
 void PatternFrame::channels(const PatternHit& hit, cal::Channels& c) const {
-    Transform m = hit.object ? hit.object->inverse().then(toPattern) : toPattern;
+    Transform m = hit.object ? hit.object->toObject.then(toPattern) : toPattern;
     double s = std::abs(m.scale);
     dvec3 d = m.vector(hit.dir) / s, n = m.vector(hit.normal) / s, p = m.point(hit.point);
     c[cal::Dx] = d.x, c[cal::Dy] = d.y, c[cal::Dz] = d.z;
@@ -39,7 +39,7 @@ void PatternFrame::channels(const PatternHit& hit, cal::Channels& c) const {
 }
 
 dvec3 PatternFrame::toWorldPerturbation(const dvec3& d, const PatternHit& hit) const {
-    Transform m = hit.object ? toWorld.then(*hit.object) : toWorld;
+    Transform m = hit.object ? toWorld.then(hit.object->toWorld) : toWorld;
     return m.vector(d) / std::abs(m.scale);
 }
 

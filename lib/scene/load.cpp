@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "scene/octree.h"
+#include "scene/placed_files.h"
 #include "scene/reader.h"
 
 namespace brume {
@@ -46,6 +47,7 @@ Scene loadScene(const std::vector<std::string>& paths) {
             readSceneFile(scene, path, ReadOptions{.searchRayPath = !here});
         }
     }
+    loadPlacedFiles(scene);
     return scene;
 }
 

@@ -23,7 +23,8 @@ void readSceneFile(Scene& scene, const std::string& path, const ReadOptions& opt
 // Appends the objects of .rad text; `name` is the file name used in error messages.
 void readSceneText(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options = {});
 // The scene named on a command line: one octree (frozen or not) or any number of .rad files ("-" for
-// standard input). A file is an octree if its information header says FORMAT=Radiance_octree.
+// standard input), with the files its instance and mesh objects place (loadPlacedFiles). A file is an
+// octree if its information header says FORMAT=Radiance_octree.
 Scene loadScene(const std::vector<std::string>& paths);
 
 }  // namespace brume

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "scene/raypath.h"
+#include "scene_text.h"
 
 namespace brume {
 namespace {
@@ -44,18 +45,7 @@ std::string fileError(const std::string& path, const ReadOptions& options = {}) 
     return "no error";
 }
 
-// Sets RAYPATH for the life of the object, restoring it afterwards.
-class ScopedRayPath {
-public:
-    explicit ScopedRayPath(const char* value) {
-        if (const char* old = std::getenv("RAYPATH")) old_ = old;
-        value ? setenv("RAYPATH", value, 1) : unsetenv("RAYPATH");
-    }
-    ~ScopedRayPath() { old_ ? setenv("RAYPATH", old_->c_str(), 1) : unsetenv("RAYPATH"); }
-
-private:
-    std::optional<std::string> old_;
-};
+using test::ScopedRayPath;
 
 TEST(SceneReader, ObjectsAreReadWithTheirArguments) {
     Scene scene = parse("void plastic red 0 0 5 .8 .1 .1 0 0\n"

@@ -4,12 +4,14 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
+#include "scene/mesh.h"
 #include "util/error.h"
 
 namespace brume {
@@ -36,6 +38,15 @@ struct OctreeCube {
     double size = 0;
 };
 
+// A file that instance or mesh objects place in the scene (an octree, or a mesh), loaded once however many
+// objects name it. Its objects (an octree's scene, a mesh's materials) follow the scene's own in
+// Scene::objects.
+struct PlacedFile {
+    std::string path;
+    int firstObject = 0, endObject = 0;
+    std::shared_ptr<const Mesh> mesh;  // a mesh's triangles; null for an octree
+};
+
 struct Scene {
     std::vector<SceneObject> objects;  // in definition order; modifiers always precede their users
     // Latest definition of each modifier identifier, used to resolve modifiers as the scene is read
@@ -49,6 +60,13 @@ struct Scene {
     // line (exactly what rtrace -h+ copies to its output header), and its bounding cube.
     std::vector<std::string> headerLines;
     std::optional<OctreeCube> cube;
+    // The octrees and meshes of instance and mesh objects (loadPlacedFiles in placed_files.h), and which
+    // one each such object names.
+    std::vector<PlacedFile> placedFiles;
+    std::unordered_map<int, int> placedFileOf;  // instance or mesh object → index in placedFiles
+
+    // The objects of the scene itself come first; those of placed files follow them.
+    size_t ownObjects() const { return placedFiles.empty() ? objects.size() : size_t(placedFiles.front().firstObject); }
 
     // Appends `object`, indexing it in lastDefinition if it is a modifier; returns its index.
     int add(SceneObject object);

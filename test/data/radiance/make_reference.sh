@@ -27,13 +27,7 @@ trap 'rm -rf "$tmp"' EXIT
 oconv materials.rad > "$tmp/materials.oct"
 
 # $1 = label/ray file, $2 = extra rtrace options, $3 = output
-run() {
-    grep -v '^#' "$1" | awk '{print $1}' > "$tmp/labels"
-    grep -v '^#' "$1" | awk '{print $2, $3, $4, $5, $6, $7}' |
-        rtrace -h- $2 $OPTS "$tmp/materials.oct" | awk '{print $1, $2, $3}' > "$tmp/values"
-    [ "$(wc -l < "$tmp/labels")" -eq "$(wc -l < "$tmp/values")" ] || { echo "rtrace failed on $1" >&2; exit 1; }
-    { echo "# label  R G B  (rtrace$2 $OPTS)"; paste -d' ' "$tmp/labels" "$tmp/values"; } > "$3"
-}
+run() { OPTS="$OPTS" ./rtrace_reference.sh "$tmp/materials.oct" "$1" "$2" "$3"; }
 run rays.txt "" reference_rays.txt
 run sensors.txt " -I" reference_sensors.txt
 run rays.txt " -i" reference_irradiance_at_hit.txt

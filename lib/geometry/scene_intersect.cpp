@@ -1,0 +1,211 @@
+// SceneGeometry's tracing: Embree's candidates, decided and completed in double precision.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/scene_geometry_group.h"
+
+namespace brume {
+
+using namespace scene_geometry_detail;
+
+namespace {
+
+// Embree's per-query context, extended with the exact ray and the exact hit of our own shapes.
+struct TraceContext {
+    RTCIntersectContext rtc;
+    const SceneGeometry* geometry;
+    const Ray* ray;  // in world coordinates
+    double exactT;
+    dvec3 exactNormal;  // in the coordinates of the shape's prototype
+};
+
+}  // namespace
+
+// Radiance: a surface (or mesh triangle) without a modifier of its own shows only where its instance gives one.
+bool SceneGeometry::hidden(const SurfaceId& id) const {
+    if (id.instance < 0) return false;
+    const Placement& p = layout_.placements[id.instance];
+    if (p.modifierObject >= 0) return false;
+    if (id.triangle >= 0) return layout_.prototypes[p.prototype].mesh->materials[id.triangle] < 0;
+    return layout_.surfaces[id.surface].voidModifier;
+}
+
+// The plane of a polygon or mesh triangle in its prototype's coordinates: its unit normal and a point of it.
+void SceneGeometry::plane(const SurfaceId& id, dvec3& normal, dvec3& point) const {
+    if (id.triangle < 0) {
+        const auto& poly = std::get<Polygon>(layout_.surfaces[id.surface].shape);
+        normal = poly.normal, point = poly.vertices[0];
+        return;
+    }
+    const Mesh& m = *meshOf(id);
+    const auto& tri = m.triangles[id.triangle];
+    point = m.vertices[tri[0]];
+    normal = glm::normalize(glm::cross(m.vertices[tri[1]] - point, m.vertices[tri[2]] - point));
+}
+
+// Whether a ray leaving a surface meets the polygon or mesh triangle `id` that Embree's float test proposes,
+// decided in double precision in the prototype's coordinates. Planes that hold the ray's origin (to rounding)
+// are those of the surface it leaves or of neighbours that meet it there (a polygon's coplanar neighbour, the
+// next triangle of a mesh), crossed at the origin: not met. Nor is a neighbour of the mesh triangle it leaves
+// that Embree claims for a crossing outside it right by the origin, at their shared edge. Elsewhere Embree's
+// choice stands: its float test is watertight between triangles, a stricter one would not be. Rounding is
+// relative to the coordinates' size, so this holds at any scale.
+bool SceneGeometry::meetsFlat(const SurfaceId& id, const Ray& ray) const {
+    const SurfaceId& from = ray.leaving;
+    if (!from) return true;
+    Ray local = localRay(ray, id.instance);
+    dvec3 n, a;
+    plane(id, n, a);
+    double size = glm::compMax(glm::abs(local.org)) + glm::compMax(glm::abs(a));
+    double height = glm::dot(n, local.org - a);
+    double t = -height / glm::dot(n, local.dir);
+    if (std::abs(height) <= 1e-12 * size || !(t > 0)) return false;
+    if (id.triangle < 0 || from.triangle < 0 || from.instance != id.instance) return true;
+    const Mesh& m = *meshOf(id);
+    const auto &tri = m.triangles[id.triangle], &left = m.triangles[from.triangle];
+    bool neighbour = std::find_first_of(tri.begin(), tri.end(), left.begin(), left.end()) != tri.end();
+    dvec3 q = local.at(t);
+    if (!neighbour || glm::length(q - local.org) > 1e-6 * size) return true;
+    for (int k = 0; k < 3; ++k) {
+        const dvec3 &v = m.vertices[tri[k]], &next = m.vertices[tri[(k + 1) % 3]];
+        if (glm::dot(glm::cross(next - v, q - v), n) < 0) return false;
+    }
+    return true;
+}
+
+// The ray in a placement's prototype coordinates. Its direction is not normalized, so that distances along it
+// are the world's.
+Ray SceneGeometry::localRay(const Ray& ray, int placement) const {
+    if (placement < 0) return ray;
+    const Transform& inverse = layout_.placements[placement].inverse;
+    Ray local = ray;
+    local.org = inverse.point(ray.org);
+    local.dir = inverse.vector(ray.dir);
+    return local;
+}
+
+void SceneGeometry::filterTriangle(const RTCFilterFunctionNArguments* args) {
+    auto* ctx = reinterpret_cast<const TraceContext*>(args->context);
+    auto* g = static_cast<const Group*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        int placement = placementOf(RTCHitN_instID(args->hit, args->N, i, 0));
+        SurfaceId id = g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
+        bool meets = id != ctx->ray->leaving && !g->owner->hidden(id) && g->owner->meetsFlat(id, *ctx->ray);
+        if (!meets) args->valid[i] = 0;
+    }
+}
+
+void SceneGeometry::exactBounds(const RTCBoundsFunctionArguments* args) {
+    auto* g = static_cast<const Group*>(args->geometryUserPtr);
+    dvec3 lo, hi;
+    shapeBounds(g->owner->layout_.surfaces[g->exactSurface[args->primID]].shape, lo, hi);
+    // Widen by a relative margin so float rounding of the box never clips the exact shape.
+    dvec3 pad = 1e-6 * (glm::abs(lo) + glm::abs(hi) + (hi - lo)) + 1e-30;
+    lo -= pad, hi += pad;
+    *args->bounds_o = RTCBounds{float(lo.x), float(lo.y), float(lo.z), 0, float(hi.x), float(hi.y), float(hi.z), 0};
+}
+
+void SceneGeometry::exactIntersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* g = static_cast<const Group*>(args->geometryUserPtr);
+    auto* ctx = reinterpret_cast<TraceContext*>(args->context);
+    auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);  // rtcIntersect1 only: N is 1
+    SurfaceId id = g->idOf(kExactGeom, args->primID, placementOf(args->context->instID[0]));
+    if (g->owner->hidden(id)) return;
+    Ray ray = g->owner->localRay(*ctx->ray, id.instance);
+    ray.tmax = std::min(ray.tmax, static_cast<double>(rayhit->ray.tfar));
+    bool leaving = id == ctx->ray->leaving;
+    std::optional<ShapeHit> hit = std::visit(
+        [&](const auto& shape) -> std::optional<ShapeHit> {
+            using T = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<T, Ring>) {
+                if (leaving) return std::nullopt;
+                return shape.intersect(ray);
+            } else if constexpr (std::is_same_v<T, Polygon>) {
+                return std::nullopt;
+            } else {
+                return shape.intersect(ray, leaving);
+            }
+        },
+        g->owner->layout_.surfaces[id.surface].shape);
+    if (!hit) return;
+    rayhit->ray.tfar = static_cast<float>(hit->t);
+    rayhit->hit.geomID = args->geomID;
+    rayhit->hit.primID = args->primID;
+    rayhit->hit.instID[0] = args->context->instID[0];
+    ctx->exactT = hit->t;
+    ctx->exactNormal = hit->normal;
+}
+
+// The exact distance to a flat surface's plane (Embree's float t only chose the triangle), and its normal,
+// in the ray's (prototype) coordinates.
+double SceneGeometry::exactPlaneHit(const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const {
+    dvec3 point;
+    plane(id, normal, point);
+    double t = glm::dot(normal, point - local.org) / glm::dot(normal, local.dir);
+    return t > 0 && std::isfinite(t) ? t : embreeT;
+}
+
+std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
+    TraceContext ctx;
+    rtcInitIntersectContext(&ctx.rtc);
+    ctx.geometry = this;
+    ctx.ray = &ray;
+    RTCRayHit rh{};
+    rh.ray.org_x = float(ray.org.x), rh.ray.org_y = float(ray.org.y), rh.ray.org_z = float(ray.org.z);
+    rh.ray.dir_x = float(ray.dir.x), rh.ray.dir_y = float(ray.dir.y), rh.ray.dir_z = float(ray.dir.z);
+    rh.ray.tnear = float(ray.tmin);
+    rh.ray.tfar = ray.tmax > 3e38 ? std::numeric_limits<float>::infinity() : float(ray.tmax);
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    // Embree traces rays only within ±1.8e18 (its FLT_LARGE); farther ones meet nothing.
+    for (float v : {rh.ray.org_x, rh.ray.org_y, rh.ray.org_z, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z, rh.ray.tnear})
+        if (!(std::abs(v) <= 1.8e18f)) return std::nullopt;
+    rtcIntersect1(groups_[0].scene, &ctx.rtc, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    int placement = placementOf(rh.hit.instID[0]);
+    const Group& g = groups_[placement < 0 ? 0 : 1 + layout_.placements[placement].prototype];
+    SurfaceHit hit{0, dvec3(0), dvec3(0), g.idOf(rh.hit.geomID, rh.hit.primID, placement)};
+    Ray local = localRay(ray, placement);
+    dvec3 normal = ctx.exactNormal;
+    hit.t = rh.hit.geomID == kExactGeom ? ctx.exactT : exactPlaneHit(hit.surface, local, rh.ray.tfar, normal);
+    hit.point = ray.at(hit.t);
+    // Radiance turns normals with the placement's matrix, mirror included: a mirrored surface keeps its front
+    // where its mirrored normal points.
+    hit.normal = placement < 0 ? normal : glm::normalize(layout_.placements[placement].transform.vector(normal));
+    if (g.mesh) interpolateMesh(hit.surface, local, hit);
+    return hit;
+}
+
+// Radiance's mesh shading: the vertex normals and (u, v) interpolated at the hit by its barycentric weights;
+// the normal turned into the world and given as a perturbation of the geometric one.
+void SceneGeometry::interpolateMesh(const SurfaceId& id, const Ray& local, SurfaceHit& hit) const {
+    const Mesh& m = *meshOf(id);
+    const auto& tri = m.triangles[id.triangle];
+    const dvec3 &a = m.vertices[tri[0]], &b = m.vertices[tri[1]], &c = m.vertices[tri[2]];
+    dvec3 n = glm::cross(b - a, c - a), q = local.at(hit.t);
+    double n2 = glm::dot(n, n);
+    if (!(n2 > 0)) return;
+    double w[3] = {glm::dot(glm::cross(c - b, q - b), n) / n2, glm::dot(glm::cross(a - c, q - c), n) / n2, 0};
+    w[2] = 1 - w[0] - w[1];
+    if (!m.normals.empty()) {
+        dvec3 shading(0);
+        bool all = true;
+        for (int k = 0; k < 3; ++k) {
+            dvec3 vn(m.normals[tri[k]]);
+            all = all && vn != dvec3(0);
+            shading += w[k] * vn;
+        }
+        if (hit.surface.instance >= 0) shading = layout_.placements[hit.surface.instance].transform.vector(shading);
+        if (all && glm::length(shading) > 0) hit.perturbation = glm::normalize(shading) - hit.normal;
+    }
+    if (!m.uvs.empty()) {
+        glm::dvec2 uv = w[0] * m.uvs[tri[0]] + w[1] * m.uvs[tri[1]] + w[2] * m.uvs[tri[2]];
+        if (!std::isnan(uv.x) && !std::isnan(uv.y)) hit.uv = uv;
+    }
+}
+
+}  // namespace brume
