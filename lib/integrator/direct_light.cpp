@@ -102,6 +102,10 @@ Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3
             add(lobes.glossyTrans, gaussianBtdf(sh.dir, l, lobes.alphaT2, sh.cosine, -cosL), lobes.sampleGlossyTrans,
                 gaussianTransmissionPdf(sh.dir, l, lobes.alphaT2));
     }
+    if (lobes.general) {
+        double w = lobes.sampleGeneral && lightDensity > 0 ? powerHeuristic(lightDensity, lobes.general->pdf(sh, l)) : 1.0;
+        f += lobes.general->response(sh, l) * float(w);
+    }
     return f;
 }
 

@@ -397,9 +397,10 @@ Spectrum Integrator::shade(const Shading& sh, const Lobes& lobes, const SurfaceI
         }
     }
     bool diffuseOrGlossy = !lobes.diffuse.isBlack() || !lobes.diffuseTrans.isBlack() || !lobes.glossy.isBlack() ||
-                           !lobes.glossyTrans.isBlack();
+                           !lobes.glossyTrans.isBlack() || lobes.general;
     if (diffuseOrGlossy) value += direct(sh, lobes, surface, state, ctx);
     if (lobes.sampleGlossy || lobes.sampleGlossyTrans) value += glossy(sh, lobes, surface, state, ctx);
+    if (lobes.general && lobes.sampleGeneral) value += general(sh, *lobes.general, surface, state, ctx);
     value += ambient(sh, lobes, surface, state, ctx);
     if (record && brightness(value) > 0 && strongest < 0.5 * brightness(value))
         record->effectiveLength = record->firstLength;
@@ -436,6 +437,26 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, const Surface
         sum += coef * (li + emission) * float(f * std::abs(cosI) / pdf * boost);
     }
     return sum;
+}
+
+// One sampled ray for a general lobe, weighted against next-event estimation where it meets a source.
+Spectrum Integrator::general(const Shading& sh, const GeneralLobe& lobe, const SurfaceId& surface,
+                             const PathState& state, Context& ctx) const {
+    double u = ctx.rng.uniform(), v = ctx.rng.uniform();
+    auto s = lobe.sample(sh, u, v);
+    if (!s || !(s->pdf > 0) || s->weight.isBlack()) return Spectrum(0.f);
+    PathState child;
+    float boost;
+    if (!spawn(state, child, s->weight, !s->transmits, ctx, boost)) return Spectrum(0.f);
+    child.kind = PathState::Kind::Sampled;
+    child.from = sh.point;
+    child.fromWeight = state.weight;
+    child.fromSubdivision = subdivision(state);
+    child.sampledDensity = s->pdf;
+    Spectrum emission(0.f);
+    Spectrum li = radiance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,
+                           &emission);
+    return s->weight * (li + emission) * boost;
 }
 
 // Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified

@@ -3,6 +3,7 @@
 // the -av ambient value) the way Radiance's -ab/-st/-lr semantics ask.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,28 @@ struct DeltaLobe {
     bool transmits;  // true for transmission (does not count as a reflection for -lr)
 };
 
+// A direction drawn from a GeneralLobe: its weight is f·|cos θ|/pdf.
+struct LobeSample {
+    dvec3 dir;
+    Spectrum weight;
+    double pdf;      // solid-angle density
+    bool transmits;  // to the other side (not a reflection for -lr)
+};
+
+// A lobe the closed forms of Lobes do not describe (tabulated BSDFs, anisotropic or function-defined BRDFs):
+// the material evaluates and samples it at the hit, on either side. The integrator estimates it like a
+// sampled glossy lobe: next-event estimation and one sampled ray, weighted by the power heuristic.
+class GeneralLobe {
+public:
+    virtual ~GeneralLobe() = default;
+    // f·|cos θ| for light arriving from unit direction `wi` (pointing away from the surface).
+    virtual Spectrum response(const Shading& s, const dvec3& wi) const = 0;
+    // The density with which sample() draws wi.
+    virtual double pdf(const Shading& s, const dvec3& wi) const = 0;
+    // u, v uniform in [0, 1); nothing when the draw falls outside the lobe.
+    virtual std::optional<LobeSample> sample(const Shading& s, double u, double v) const = 0;
+};
+
 struct Lobes {
     Spectrum diffuse;         // Lambertian reflectance on the ray's side
     Spectrum diffuseTrans;    // Lambertian transmittance to the other side
@@ -47,6 +70,10 @@ struct Lobes {
     // Pure-specular plastic and metal reflect less diffusely at grazing light (Radiance's Fresnel
     // estimate): the diffuse parts of direct light are scaled by 1 − F(|n·l|).
     bool fresnelDiffuse = false;
+    // Set by materials with such a lobe (it lives as long as the material); `sampleGeneral`: also traced by
+    // sampled rays (else only direct light reaches it).
+    const GeneralLobe* general = nullptr;
+    bool sampleGeneral = false;
     DeltaLobe delta[2];
     int deltaCount = 0;
     // Attenuation of the incoming ray itself, e.g. absorption inside a dielectric it leaves.
