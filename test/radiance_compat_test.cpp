@@ -257,6 +257,16 @@ TEST(RadianceCompat, MeshesAndInstancesAgreeWithRadiance) {
     expectAgreement(kInstances, scene, "sensors.txt", 10, Mode::Sensor, "reference_sensors.txt", 0.01);
 }
 
+// Patterns and textures in placed objects (test/data/radiance_instances/patterned.rad): an octree's own
+// patterns work in its coordinates wherever instances put it, an instance's patterned modifier in the frame of
+// the instance, a mesh's (u, v) reach patterns as Lu, Lv, and a texture adds to a mesh's vertex normals.
+// Each ray within 1%, as above.
+TEST(RadianceCompat, PatternsInInstancesAndMeshesAgreeWithRadiance) {
+    test::ScopedRayPath path(kInstances.c_str());  // RenderScene compiles the patterns: keep RAYPATH until done
+    Scene scene = loadScene({kInstances + "patterned.rad"});
+    expectAgreement(kInstances, scene, "patterned_rays.txt", 20, Mode::View, "reference_patterned.txt", 0.01, 16);
+}
+
 // The same scene with the Wavefront file in place of the mesh obj2mesh compiled from it (its usemtl names
 // taking the materials obj2mesh was given) gives the same values: the faces split along the same diagonals,
 // normals and (u, v) as obj2mesh makes them.

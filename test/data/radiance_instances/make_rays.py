@@ -83,6 +83,34 @@ VIEWS = [
     ("group_vault_tile", on_vault(128, .5), GROUP_VAULT, (0, .5, -1)),
 ]
 
+# patterned.rad: patterns in placed tiles and meshes (the tiles at z = .01, colour tile x 0…1, texture tile x 1.1…2.1)
+TILES_A = (rz(30), t(-2, -1.5, 0))
+TILES_B = (s(1.2), mx, t(3, -1.8, 0))
+UV_VAULT = (rz(20), t(-1.5, 2, 0))
+P_VAULT = (s(1.3), rz(-10), t(1.8, 1.5, 0))
+PATTERNED_VIEWS = [
+    ("tilesA_colour_1", (.2, .3, .01), TILES_A, (0, 0, -1)),
+    ("tilesA_colour_2", (.7, .6, .01), TILES_A, (.3, .2, -1)),
+    ("tilesA_colour_3", (.45, .85, .01), TILES_A, (-.2, .4, -1)),
+    ("tilesA_texture_1", (1.3, .2, .01), TILES_A, (0, 0, -1)),
+    ("tilesA_texture_2", (1.75, .55, .01), TILES_A, (.2, -.3, -1)),
+    ("tilesA_texture_3", (1.9, .9, .01), TILES_A, (0, 0, -1)),
+    ("tilesB_colour_1", (.25, .35, .01), TILES_B, (0, 0, -1)),
+    ("tilesB_colour_2", (.8, .75, .01), TILES_B, (.1, .3, -1)),
+    ("tilesB_texture_1", (1.4, .3, .01), TILES_B, (0, 0, -1)),
+    ("tilesB_texture_2", (1.85, .7, .01), TILES_B, (-.3, .1, -1)),
+    ("uv_vault_1", on_vault(40, .2), UV_VAULT, (0, 0, -1)),
+    ("uv_vault_2", on_vault(95, .7), UV_VAULT, (0, 0, -1)),
+    ("uv_vault_3", on_vault(140, .45), UV_VAULT, (.5, -.2, -.6)),
+    ("uv_vault_4", on_vault(62, .9), UV_VAULT, (-.4, .1, -.7)),
+    ("pvault_paint_1", on_vault(50, .25), P_VAULT, (0, 0, -1)),
+    ("pvault_paint_2", on_vault(20, .6), P_VAULT, (-.7, .1, -.4)),
+    ("pvault_paint_3", on_vault(75, .85), P_VAULT, (0, 0, -1)),
+    ("pvault_tile_1", on_vault(105, .3), P_VAULT, (0, 0, -1)),
+    ("pvault_tile_2", on_vault(135, .65), P_VAULT, (.6, -.1, -.5)),
+    ("pvault_tile_3", on_vault(160, .5), P_VAULT, (.8, .2, -.3)),
+]
+
 SENSORS = [
     ("floor_open", (0, 0, 0)),
     ("floor_by_vault", (.6, .8, 0)),
@@ -99,15 +127,20 @@ SENSORS = [
 ]
 
 
-def main(out):
-    with open(f"{out}/rays.txt", "w") as f:
+def write_views(path, views):
+    with open(path, "w") as f:
         f.write("# label  x y z  dx dy dz  (make_rays.py)\n")
-        for label, p, steps, d in VIEWS:
+        for label, p, steps, d in views:
             q = place(p, *steps)
             n = math.sqrt(sum(c * c for c in d))
             d = tuple(c / n for c in d)
             o = tuple(q[i] - 1.5 * d[i] for i in range(3))
             f.write(f"{label} {o[0]:.9f} {o[1]:.9f} {o[2]:.9f} {d[0]:.9f} {d[1]:.9f} {d[2]:.9f}\n")
+
+
+def main(out):
+    write_views(f"{out}/rays.txt", VIEWS)
+    write_views(f"{out}/patterned_rays.txt", PATTERNED_VIEWS)
     with open(f"{out}/sensors.txt", "w") as f:
         f.write("# label  x y z  nx ny nz  (make_rays.py)\n")
         for label, p in SENSORS:
