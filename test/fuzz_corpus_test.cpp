@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fuzz/exercise_cal.h"
+#include "fuzz/exercise_pattern_data.h"
 #include "fuzz/mesh_invariants.h"
 #include "integrator/render_scene.h"
 #include "io/ray_reader.h"
@@ -101,6 +102,11 @@ TEST(FuzzCorpus, RayInputsEndCleanly) {
         while (reader.next(ray)) ++n;
         EXPECT_LE(n, int(bytes.size()));
     }
+}
+
+TEST(FuzzCorpus, DataFilesAndPicturesAreReadOrRefusedCleanly) {
+    for (const std::string& input : corpus("corpus_data")) EXPECT_TRUE(exerciseDataFile(input));
+    for (const std::string& input : corpus("corpus_picture")) EXPECT_TRUE(exercisePicture(input));
 }
 
 TEST(FuzzCorpus, CalInputsCompileAndEvaluateCleanly) {

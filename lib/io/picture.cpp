@@ -18,6 +18,7 @@ namespace brume {
 namespace {
 
 constexpr int kMinRunLength = 4;
+constexpr double kMaxPixels = double(1 << 28);  // 256 M pixels, 3 GB of floats: beyond any real picture
 
 [[noreturn]] void bad(const std::string& name, const std::string& what) {
     throw Error(name + ": " + what);
@@ -78,6 +79,7 @@ void readScanline(std::istream& in, const std::string& name, std::vector<unsigne
         else for (auto& b : c) b = (unsigned char)byte(in, name);
         if (c[0] == 1 && c[1] == 1 && c[2] == 1) {
             if (x == 0) bad(name, "repeat before first pixel");
+            if (shift > 16) bad(name, "bad run length");  // a scanline holds at most 2^20 pixels
             long count = long(c[3]) << shift;
             if (x + count > n) bad(name, "bad run length");
             for (long k = 0; k < count; ++k, ++x) std::memcpy(&line[size_t(x) * 4], &line[size_t(x - 1) * 4], 4);
@@ -168,20 +170,25 @@ Picture readRadiancePicture(std::istream& in, const std::string& name) {
     Picture p;
     readHeader(in, name, p);
     ScanOrder o = readResolution(in, name);
+    if (double(o.width) * o.height > kMaxPixels) bad(name, "picture too large");
+    // The scanlines first, in a buffer that grows as they arrive: a resolution line promising more than the
+    // file holds costs no more memory than the file.
+    int lines = o.transposed ? o.width : o.height, length = o.transposed ? o.height : o.width;
+    std::vector<unsigned char> raw, line;
+    for (int s = 0; s < lines; ++s) {
+        readScanline(in, name, line, length);
+        raw.insert(raw.end(), line.begin(), line.begin() + size_t(length) * 4);
+    }
     p.width = o.width;
     p.height = o.height;
     p.pixels.resize(size_t(p.width) * p.height * 3);
-    int lines = o.transposed ? o.width : o.height, length = o.transposed ? o.height : o.width;
-    std::vector<unsigned char> line;
-    for (int s = 0; s < lines; ++s) {
-        readScanline(in, name, line, length);
+    for (int s = 0; s < lines; ++s)
         for (int k = 0; k < length; ++k) {
             int x = o.transposed ? s : k, y = o.transposed ? k : s;
             if (o.flipX) x = p.width - 1 - x;
             if (o.flipY) y = p.height - 1 - y;
-            decode(&line[size_t(k) * 4], p.at(x, y));
+            decode(&raw[(size_t(s) * length + k) * 4], p.at(x, y));
         }
-    }
     return p;
 }
 

@@ -90,7 +90,11 @@ TEST(Picture, TruncatedOrMalformedPicturesAreErrors) {
     }
     for (const char* text : {"P6\n", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 3\n",
                              "#?RADIANCE\nFORMAT=Radiance_spectra\n\n-Y 1 +X 1\n\1\2\3\4",
-                             "#?RADIANCE\n\n-Y 2 -Y 3\n"}) {
+                             "#?RADIANCE\n\n-Y 2 -Y 3\n",
+                             // promises 2^40 pixels: refused before anything is allocated
+                             "#?RADIANCE\n\n-Y 1048576 +X 1048576\n\1\1\1\1",
+                             // old run-length repeats (of 0 pixels) shifted past any scanline's length
+                             "#?RADIANCE\n\n-Y 1 +X 9\n\4\4\4\4\1\1\1\0\1\1\1\0\1\1\1\0\1\1\1\1"}) {
         std::istringstream in(text);
         EXPECT_THROW(readRadiancePicture(in, "bad"), Error) << text;
     }

@@ -1,9 +1,11 @@
 #include "pattern/data_grid.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 #include "scene/raypath.h"
@@ -13,6 +15,7 @@ namespace brume {
 
 DataGrid::DataGrid(std::vector<Axis> axes, int channels, std::vector<float> values)
     : axes_(std::move(axes)), strides_(axes_.size()), channels_(channels), values_(std::move(values)) {
+    assert(channels_ >= 1 && channels_ <= kMaxChannels);
     size_t stride = size_t(channels_);
     for (size_t d = axes_.size(); d-- > 0;) {
         strides_[d] = stride;
@@ -94,7 +97,11 @@ DataGrid DataGrid::readDataFile(const std::string& name) {
     if (path.empty()) throw Error("cannot find data file \"" + name + "\"");
     std::ifstream in(path);
     if (!in) throw Error("cannot open data file \"" + path + "\"");
-    NumberReader r(in, path);
+    return read(in, path);
+}
+
+DataGrid DataGrid::read(std::istream& in, const std::string& name) {
+    NumberReader r(in, name);
     int n = r.count("number of dimensions", 1, kMaxDimensions);
     std::vector<Axis> axes;
     double size = 1;
@@ -103,8 +110,13 @@ DataGrid DataGrid::readDataFile(const std::string& name) {
         size *= axes.back().count;
         if (size > kMaxValues) throw Error(r.where(), "data array too large");
     }
-    std::vector<float> values(size_t(size), 0.f);
-    for (float& v : values) v = float(r.next("data value"));
+    // Grown as values arrive, so that a header promising more than the file holds costs nothing.
+    std::vector<float> values;
+    values.reserve(size_t(std::min(size, 1e6)));
+    for (size_t i = 0; i < size_t(size); ++i) {
+        values.push_back(float(r.next("data value")));
+        if (!std::isfinite(values.back())) throw Error(r.where(), "data value beyond single precision");
+    }
     return DataGrid(std::move(axes), 1, std::move(values));
 }
 
@@ -140,11 +152,14 @@ std::pair<int, double> locate(const DataGrid::Axis& a, double x) {
 }  // namespace
 
 void DataGrid::interpolate(std::span<const double> point, float* out) const {
-    std::fill_n(out, channels_, 0.f);
-    accumulate(point, 0, 0, 1.0, out);
+    double sum[kMaxChannels] = {};
+    accumulate(point, 0, 0, 1.0, sum);
+    // Extrapolating values near the largest float can pass it: kept finite.
+    constexpr double kLargest = std::numeric_limits<float>::max();
+    for (int c = 0; c < channels_; ++c) out[c] = float(std::clamp(sum[c], -kLargest, kLargest));
 }
 
-void DataGrid::accumulate(std::span<const double> point, size_t offset, int dim, double coef, float* out) const {
+void DataGrid::accumulate(std::span<const double> point, size_t offset, int dim, double coef, double* out) const {
     if (!std::isfinite(point[dim])) return;  // nowhere on the grid: contributes nothing
     auto [i, x] = locate(axes_[dim], point[dim]);
     double c0, c1;
@@ -162,7 +177,7 @@ void DataGrid::accumulate(std::span<const double> point, size_t offset, int dim,
     size_t at = offset + size_t(i) * strides_[dim];
     if (dim + 1 == dimensions()) {
         for (int c = 0; c < channels_; ++c)
-            out[c] += float(coef * (c0 * values_[at + c] + c1 * values_[at + strides_[dim] + c]));
+            out[c] += coef * (c0 * values_[at + c] + c1 * values_[at + strides_[dim] + c]);
         return;
     }
     accumulate(point, at, dim + 1, coef * c0, out);

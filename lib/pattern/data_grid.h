@@ -1,6 +1,7 @@
 // Values tabulated on an n-dimensional grid and interpolated between its nodes, as Radiance's data files
 // (brightdata, colordata, texdata, mixdata, ies2rad distributions) and pictures (colorpict) are.
 #pragma once
+#include <iosfwd>
 #include <span>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@ namespace brume {
 class DataGrid {
 public:
     static constexpr int kMaxDimensions = 16;
+    static constexpr int kMaxChannels = 3;
 
     // One dimension: `count` nodes evenly spaced from `begin` to `end`, or at the given points (monotonic).
     struct Axis {
@@ -24,6 +26,8 @@ public:
 
     // A Radiance data file, found along RAYPATH. Throws Error (file:line) when it is malformed.
     static DataGrid readDataFile(const std::string& name);
+    // The same from a stream; `name` for messages.
+    static DataGrid read(std::istream& in, const std::string& name);
     // A picture as colorpict sees it: two dimensions, v (rows, from the bottom) then u (columns), the
     // smaller one spanning 0…1 and the other its aspect ratio; three channels.
     static DataGrid fromPicture(const Picture& picture);
@@ -37,7 +41,7 @@ public:
     void interpolate(std::span<const double> point, float* out) const;
 
 private:
-    void accumulate(std::span<const double> point, size_t offset, int dim, double coef, float* out) const;
+    void accumulate(std::span<const double> point, size_t offset, int dim, double coef, double* out) const;
 
     std::vector<Axis> axes_;
     std::vector<size_t> strides_;  // values between neighbouring nodes along each axis

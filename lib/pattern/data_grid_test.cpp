@@ -76,6 +76,16 @@ TEST(DataGrid, PicturesMapToUnitHeightCoordinates) {
     EXPECT_FLOAT_EQ(rgb[0], 0);
 }
 
+// Values near the largest float, extrapolated past it, stay finite.
+TEST(DataGrid, ExtrapolatingHugeValuesStaysFinite) {
+    DataGrid grid({DataGrid::Axis{0, 1, 2, {}}}, 1, {0.f, 3e38f});
+    float v;
+    double x = 1.9;
+    grid.interpolate(std::span<const double>(&x, 1), &v);
+    EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GT(v, 3e38f);
+}
+
 TEST(DataGrid, MalformedFilesAreErrorsWithTheirLine) {
     struct Case {
         const char* text;
@@ -84,7 +94,9 @@ TEST(DataGrid, MalformedFilesAreErrorsWithTheirLine) {
                  {"1\n0 1 1\n5\n", "bad node count"},
                  {"1\n0 1 3\n1 2\n", "unexpected end of file"},
                  {"1\n0 0 3 1 3 2\n1 2 3\n", "not monotonic"},
-                 {"1\n0 1 2\n1 x\n", ":3: bad data value"}};
+                 {"1\n0 1 2\n1 x\n", ":3: bad data value"},
+                 {"1\n0 1 2\n1 1e39\n", ":3: data value beyond single precision"},
+                 {"2\n0 1 30000\n0 1 30000\n1 2\n", "unexpected end of file"}};
     for (const Case& c : cases) {
         std::string path = writeFile("grid_bad.dat", c.text);
         try {

@@ -1,0 +1,11 @@
+// libFuzzer target for the Radiance picture reader (RGBE/XYZE, every encoding and scan order), as colorpict reads it (see README.md).
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "exercise_pattern_data.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    if (!brume::exercisePicture(std::string_view(reinterpret_cast<const char*>(data), size))) __builtin_trap();
+    return 0;
+}
