@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fuzz/exercise_cal.h"
+#include "fuzz/exercise_font.h"
 #include "fuzz/exercise_pattern_data.h"
 #include "fuzz/mesh_invariants.h"
 #include "integrator/render_scene.h"
@@ -115,4 +116,10 @@ TEST(FuzzCorpus, CalInputsCompileAndEvaluateCleanly) {
     ASSERT_FALSE(inputs.empty());
     for (const std::string& text : inputs) EXPECT_TRUE(cal::exerciseCal(text)) << text;
     setWarningsEnabled(true);
+}
+
+TEST(FuzzCorpus, FontInputsAreReadOrRefusedCleanly) {
+    replay("corpus_font", [](std::istream& in) {
+        fuzz::exerciseFont(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+    });
 }

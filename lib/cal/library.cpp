@@ -37,11 +37,7 @@ std::string readFile(const std::string& path) {
     return text.str();
 }
 
-const EmbeddedFile* findEmbedded(std::string_view name) {
-    auto files = embeddedCalFiles();
-    auto it = std::find_if(files.begin(), files.end(), [&](const EmbeddedFile& f) { return f.name == name; });
-    return it == files.end() ? nullptr : &*it;
-}
+const EmbeddedFile* findEmbedded(std::string_view name) { return brume::findEmbedded(embeddedCalFiles(), name); }
 
 }  // namespace
 

@@ -43,6 +43,12 @@ const DataGrid& PatternLibrary::picture(const std::string& name) {
     return *grid;
 }
 
+const Font& PatternLibrary::font(const std::string& name, const SourceLocation& where) {
+    auto& font = fonts_[name];
+    if (!font) font = std::make_unique<Font>(loadFont(name, where));
+    return *font;
+}
+
 void PatternLibrary::finish() { program_ = std::move(*compiler_).finish(); }
 
 }  // namespace brume

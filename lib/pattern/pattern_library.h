@@ -1,5 +1,5 @@
 // What the scene's patterns share: the .cal definitions they use, compiled once into one program that
-// every thread evaluates, and the data files and pictures they interpolate, each read once.
+// every thread evaluates, and the data files, pictures and fonts they read, each read once.
 #pragma once
 #include <map>
 #include <memory>
@@ -8,6 +8,7 @@
 #include "cal/compiler.h"
 #include "cal/library.h"
 #include "pattern/data_grid.h"
+#include "pattern/font.h"
 
 namespace brume {
 
@@ -24,6 +25,7 @@ public:
     int parameters(const std::string& name, const cal::Scope& scope) const;
     const DataGrid& dataFile(const std::string& name);
     const DataGrid& picture(const std::string& name);
+    const Font& font(const std::string& name, const SourceLocation& where);
 
     // Compiles what was asked for; program() is valid from then on.
     void finish();
@@ -34,6 +36,7 @@ private:
     std::unique_ptr<cal::Compiler> compiler_;
     cal::Program program_;
     std::map<std::string, std::unique_ptr<DataGrid>> grids_;
+    std::map<std::string, std::unique_ptr<Font>> fonts_;
 };
 
 }  // namespace brume

@@ -7,6 +7,7 @@
 
 #include "pattern/pattern_evaluator.h"
 #include "pattern/pattern_frame.h"
+#include "pattern/text_pattern.h"
 #include "util/error.h"
 
 namespace brume {
@@ -234,6 +235,7 @@ std::unique_ptr<Pattern> makePattern(const Scene& scene, int object, PatternLibr
     if (o.type == "colordata") return std::make_unique<DataPattern>(dataLookup(o, lib, 3, 3), false);
     if (o.type == "texdata") return std::make_unique<DataPattern>(dataLookup(o, lib, 3, 3, true), true);
     if (o.type == "colorpict") return std::make_unique<DataPattern>(pictureLookup(o, lib, 3), false);
+    if (o.type == "brighttext" || o.type == "colortext") return makeTextPattern(o, lib);
     throw Error(o.where, "type '" + o.type + "' (" + o.name + ") is not supported by Brume yet");
 }
 
@@ -244,6 +246,7 @@ std::unique_ptr<Mixture> makeMixture(const Scene& scene, int object, PatternLibr
     if (o.type == "mixfunc") mix = std::make_unique<FunctionMixture>(o, lib);
     else if (o.type == "mixdata") mix = std::make_unique<DataMixture>(dataLookup(withoutModifierNames(o), lib, 1, 1));
     else if (o.type == "mixpict") mix = std::make_unique<DataMixture>(pictureLookup(withoutModifierNames(o), lib, 1));
+    else if (o.type == "mixtext") mix = makeTextMixture(o, lib);
     else throw Error(o.where, "type '" + o.type + "' (" + o.name + ") is not supported by Brume yet");
     mix->foreground = modifierArgument(scene, object, o.strings[0]);
     mix->background = modifierArgument(scene, object, o.strings[1]);
