@@ -169,15 +169,32 @@ KlemsBsdf::Views KlemsBsdf::jittered(const dvec3& view, double side) {
     return views;
 }
 
+// Calls f(slice, light's patch along it) for each view with a slice toward the light's side. The light's
+// patch is found once for all views that read the matrix the same way.
+template <class F>
+void KlemsBsdf::forEachView(const Views& views, const dvec3& light, F f) const {
+    bool transmit = (views[0].z > 0) != (light.z > 0);
+    std::optional<Slice> last;
+    int k = -1;
+    for (const dvec3& v : views) {
+        auto s = slice(v, transmit);
+        if (!s) continue;
+        if (!last || last->m != s->m || last->reverse != s->reverse) k = s->at(light);
+        last = s;
+        f(*s, k);
+    }
+}
+
 Rgb KlemsBsdf::smoothedValue(const dvec3& view, const dvec3& light) const {
     bool transmit = (view.z > 0) != (light.z > 0);
     double patch = std::min(viewPatch(view, transmit), lightPatch(view, light));
     Rgb sum{0, 0, 0};
     if (!(patch > 0)) return sum;
-    for (const dvec3& v : jittered(view, std::sqrt(patch))) {
-        Rgb f = value(v, light);
+    forEachView(jittered(view, std::sqrt(patch)), light, [&](const Slice& s, int k) {
+        if (k < 0) return;
+        Rgb f = entry(*s.m, s.index(k));
         for (int c = 0; c < 3; ++c) sum[size_t(c)] += f[size_t(c)] / (kJitter * kJitter);
-    }
+    });
     return sum;
 }
 
@@ -206,12 +223,10 @@ std::optional<dvec3> KlemsBsdf::smoothedSample(const dvec3& view, bool transmit,
 double KlemsBsdf::smoothedProjectedPdf(const dvec3& view, const dvec3& light) const {
     bool transmit = (view.z > 0) != (light.z > 0);
     double values = 0, total = 0;
-    for (const dvec3& w : jittered(view, std::sqrt(viewPatch(view, transmit)))) {
-        auto s = slice(w, transmit);
-        if (!s) continue;
-        total += s->total;
-        if (int k = s->at(light); k >= 0) values += s->y(k);
-    }
+    forEachView(jittered(view, std::sqrt(viewPatch(view, transmit))), light, [&](const Slice& s, int k) {
+        total += s.total;
+        if (k >= 0) values += s.y(k);
+    });
     return total > 1e-6 ? values / total : 0.0;
 }
 

@@ -58,6 +58,8 @@ private:
     double viewPatch(const dvec3& view, bool transmit) const;
     double lightPatch(const dvec3& view, const dvec3& light) const;
     static Views jittered(const dvec3& view, double side);
+    template <class F>
+    void forEachView(const Views& views, const dvec3& light, F f) const;
     // One column (or, by reciprocity, one row) of a matrix: the distribution for one view patch.
     struct Slice;
     const KlemsMatrix* matrix(bool viewFront, bool lightFront) const;

@@ -1,5 +1,6 @@
 #include "material/bsdf_material.h"
 
+#include <atomic>
 #include <cmath>
 
 #include "pattern/pattern_frame.h"
@@ -57,6 +58,8 @@ KlemsBsdf load(const SceneObject& o) {
 
 BsdfMaterial::BsdfMaterial(const SceneObject& o, const MaterialSettings& settings)
     : settings_(settings), name_(o.name), bsdf_(load(o)) {
+    static std::atomic<uint64_t> materials{0};
+    id_ = ++materials;
     if (!o.integers.empty()) badArguments(o, "expected 0 integers");
     readDiffuse(o);
     Orientation orient = orientation(o);
@@ -101,11 +104,18 @@ std::optional<BsdfMaterial::View> BsdfMaterial::viewAt(const Shading& s) const {
 }
 
 BsdfMaterial::Split BsdfMaterial::split(const View& v) const {
+    // The integrator asks again at the same hit for every light sample (pdf) and the sampled ray: the last
+    // answer is kept per thread.
+    thread_local uint64_t lastMaterial = 0;
+    thread_local dvec3 lastView;
+    thread_local Split last;
+    if (lastMaterial == id_ && lastView == v.view) return last;
     Split s;
     for (int t = 0; t < 2; ++t) {
         s.albedo[t] = bsdf_.smoothedAlbedo(v.view, t == 1);
         s.sampled[t] = s.albedo[t] > settings_.specularThreshold + kTiny;
     }
+    lastMaterial = id_, lastView = v.view, last = s;
     return s;
 }
 

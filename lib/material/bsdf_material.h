@@ -55,6 +55,7 @@ private:
 
     MaterialSettings settings_;
     std::string name_;
+    uint64_t id_;  // unique over the process, unlike addresses: keys the per-thread cache of split()
     KlemsBsdf bsdf_;
     dvec3 up_;
     Rgb extraReflect_[2]{}, extraTransmit_{};  // the real arguments: front, back reflection; transmission

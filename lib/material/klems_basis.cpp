@@ -20,6 +20,7 @@ KlemsBasis::KlemsBasis(std::string name, std::vector<Ring> rings) : name_(std::m
     for (const Ring& r : rings_) {
         double c0 = std::cos(r.lowerTheta * kDegree), c1 = std::cos(r.upperTheta * kDegree);
         for (int k = 0; k < r.phis; ++k) ohm_.push_back(M_PI * (c0 * c0 - c1 * c1) / r.phis);
+        cosUpper_.push_back(c1);
         size_ += r.phis;
     }
 }
@@ -42,17 +43,18 @@ const KlemsBasis* KlemsBasis::standard(const std::string& name) {
 
 int KlemsBasis::index(const dvec3& d) const {
     if (d.z < 0 || d.z > 1.00001) return -1;
-    double theta = std::acos(std::min(1.0, d.z)) / kDegree;
-    double phi = std::atan2(d.y, d.x) / kDegree;
-    if (phi < 0) phi += 360;
     int first = 0;
-    for (const Ring& r : rings_) {
-        // A direction on a ring boundary belongs to the outer ring.
-        if (theta < r.upperTheta) {
-            int k = int(phi / 360 * r.phis + 0.5);
-            return first + (k >= r.phis ? 0 : k);
+    for (size_t r = 0; r < rings_.size(); ++r) {
+        // θ < upper bound; a direction on a boundary belongs to the outer ring.
+        if (d.z > cosUpper_[r]) {
+            int phis = rings_[r].phis;
+            if (phis == 1) return first;
+            double phi = std::atan2(d.y, d.x) / kDegree;
+            if (phi < 0) phi += 360;
+            int k = int(phi / 360 * phis + 0.5);
+            return first + (k >= phis ? 0 : k);
         }
-        first += r.phis;
+        first += rings_[r].phis;
     }
     return -1;
 }

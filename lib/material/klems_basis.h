@@ -34,6 +34,7 @@ private:
     int ring(int p, int& within) const;
     std::string name_;
     std::vector<Ring> rings_;
+    std::vector<double> cosUpper_;  // per ring: cos of its upper polar angle, for finding rings without acos
     std::vector<double> ohm_;
     int size_ = 0;
 };
