@@ -10,7 +10,7 @@ namespace {
 // Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
 const std::set<std::string> kPlannedTypes{
     "mist", "spectrum", "specfile", "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2",
-    "WGMDfunc", "interface", "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata",
+    "WGMDfunc", "interface", "prism1", "prism2", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata",
     "metdata", "transdata", "BRTDfunc"};
 
 // The key of a placed surface in RenderScene::placedLight_.

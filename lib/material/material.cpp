@@ -2,13 +2,14 @@
 
 #include <set>
 
+#include "material/bsdf_material.h"
 #include "material/normal.h"
 #include "material/specular.h"
 
 namespace brume {
 
 bool isMaterialType(const std::string& t) {
-    static const std::set<std::string> kTypes{"plastic", "metal", "trans", "mirror", "glass", "dielectric"};
+    static const std::set<std::string> kTypes{"plastic", "metal", "trans", "mirror", "glass", "dielectric", "BSDF"};
     return kTypes.count(t) > 0;
 }
 
@@ -23,6 +24,7 @@ std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const M
         else if (o.type == "mirror") materials[i] = std::make_unique<Mirror>(o, settings);
         else if (o.type == "glass") materials[i] = std::make_unique<Glass>(o, settings);
         else if (o.type == "dielectric") materials[i] = std::make_unique<Dielectric>(o);
+        else if (o.type == "BSDF") materials[i] = std::make_unique<BsdfMaterial>(o, settings);
     }
     return materials;
 }

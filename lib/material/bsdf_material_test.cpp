@@ -1,0 +1,53 @@
+#include "material/bsdf_material.h"
+
+#include <gtest/gtest.h>
+
+#include "scene_text.h"
+
+namespace brume {
+namespace {
+
+const std::string kDir = std::string(BRUME_TEST_DATA) + "/bsdf";
+
+std::string errorOf(const std::string& text) {
+    test::ScopedRayPath path(kDir.c_str());
+    try {
+        Scene scene = test::sceneFromText(text);
+        makeMaterials(scene, MaterialSettings{});
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(BsdfMaterial, BadArgumentsSayWhereAndWhat) {
+    EXPECT_EQ(errorOf("void BSDF b 6 0 prism_quarter.xml 0 1 0 . 0 2 1 1"),
+              "test.rad:1: bad arguments for BSDF \"b\": expected 0, 3, 6 or 9 reals");
+    EXPECT_EQ(errorOf("void BSDF b 5 0 prism_quarter.xml 0 1 0 0 0"),
+              "test.rad:1: bad arguments for BSDF \"b\": expected 6 or more strings");
+    EXPECT_EQ(errorOf("\nvoid BSDF b 6 0 none.xml 0 1 0 . 0 0"), "test.rad:2: cannot find BSDF file \"none.xml\" for b");
+    EXPECT_EQ(errorOf("void BSDF b 6 0 prism_quarter.xml 0 Py 0 . 0 0"),
+              "test.rad:1: bad arguments for BSDF \"b\": \"Py\" varies over the surface; Brume takes only constant "
+              "thickness and up vectors");
+    EXPECT_EQ(errorOf("void BSDF b 6 0 prism_quarter.xml 0 1 0 . 0 9 .1 .1 .1 .1 .1 .1 .1 .1 .1"), "no error");
+}
+
+TEST(BsdfMaterial, UpVectorTurnsTheLobe) {
+    test::ScopedRayPath path(kDir.c_str());
+    auto value = [&](const char* up) {
+        test::TestScene t(std::string("void BSDF b 6 0 prism_quarter.xml ") + up + " . 0 0\n"
+                          "b polygon p 0 0 12 -1 -1 0 -1 1 0 1 1 0 1 -1 0\n");
+        const Material* m = t.render.material(0);
+        Shading s{dvec3(0), dvec3(0, 0, -1), dvec3(0, 0, 1), 1.0, false, true, 1.0};
+        Lobes lobes;
+        EXPECT_TRUE(m->scatter(s, lobes));
+        EXPECT_TRUE(lobes.general && lobes.sampleGeneral);  // transmission above -st 0.15
+        return lobes.general->response(s, glm::normalize(dvec3(0, 0.3, 1)))[0];
+    };
+    // prism_quarter.xml bends transmitted light toward the up vector: light from +y above, going toward −y,
+    // is bent back toward the straight-down view when up is +y, further away when up is −y.
+    EXPECT_GT(value("0 1 0"), 2 * value("0 -1 0"));
+}
+
+}  // namespace
+}  // namespace brume
