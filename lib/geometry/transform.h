@@ -31,6 +31,13 @@ struct Transform {
     Transform then(const Transform& next) const { return {next.matrix * matrix, scale * next.scale}; }
 };
 
+// The frame of an instance or mesh (Radiance's object transform), in which patterns and the directions
+// materials give work on its surfaces.
+struct ObjectFrame {
+    Transform toWorld;
+    Transform toObject;  // its inverse
+};
+
 // Whether `arg` starts a transform: -t -s -i -rx -ry -rz -mx -my -mz.
 bool isTransformOption(std::string_view arg);
 

@@ -205,7 +205,7 @@ Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfi
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
         if (!hit) return toInfinity ? t : Spectrum(0.f);
-        Shading sh = shadingAt(ray, *hit, false);
+        Shading sh = shadingAt(ray, *hit, false, scene_.objectFrame(hit->surface));
         // The source itself: its pattern is the caller's (sourceRadiance), only its material matters here.
         int mat = hit->surface == target ? scene_.materialObject(target) : shaderAt(ray, *hit, sh, ctx);
         bool cut = mat < 0 || (state.clipCount > 0 && clipped(mat, state)) ||

@@ -77,7 +77,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
         Shading sh;
         int mat = -1;
         if (hit) {
-            sh = shadingAt(ray, *hit, false);
+            sh = shadingAt(ray, *hit, false, scene_.objectFrame(hit->surface));
             mat = shaderAt(ray, *hit, sh, ctx);
         }
         if (hit && crossing == 0) {
@@ -163,7 +163,7 @@ Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Conte
                                    Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
     if (!hit) return escaped(ray, state, record, misEmission);
-    Shading sh = shadingAt(ray, *hit, scene_.geometry().isFlat(hit->surface));
+    Shading sh = shadingAt(ray, *hit, scene_.geometry().isFlat(hit->surface), scene_.objectFrame(hit->surface));
     if (state.kind == PathState::Kind::Primary && scene_.varies(hit->surface))
         return blendedHit(ray, *hit, sh, state, ctx, record, misEmission);
     int mat = shaderAt(ray, *hit, sh, ctx);

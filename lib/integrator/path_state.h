@@ -17,10 +17,12 @@ inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b
 
 // The hit as a material sees it: the normal, perturbed (by mesh normals and a texture's `texture`), turned
 // toward the ray, and which side was hit.
-inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat, const dvec3& texture = dvec3(0)) {
+inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat, const ObjectFrame* object,
+                         const dvec3& texture = dvec3(0)) {
     double along = glm::dot(hit.normal, ray.dir);
     bool backside = along > 0;
     Shading sh{hit.point, backside ? -hit.normal : hit.normal, ray.dir, std::abs(along), backside, flat, hit.t};
+    sh.object = object;
     dvec3 perturbation = hit.perturbation + texture;
     if (perturbation == dvec3(0)) return sh;
     // Radiance's raynormal: the perturbed normal turns with the surface; where it would face away from the
@@ -43,7 +45,7 @@ inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat, const
 // The patterns' colour, and the texture's perturbation added to the hit's own (mesh normals), as Radiance's
 // raytexture adds to the ray's before raynormal.
 inline void applyTexturing(Shading& sh, const Texturing& t, const Ray& ray, const SurfaceHit& hit) {
-    if (glm::dot(t.perturbation, t.perturbation) > 1e-12) sh = shadingAt(ray, hit, false, t.perturbation);
+    if (glm::dot(t.perturbation, t.perturbation) > 1e-12) sh = shadingAt(ray, hit, false, sh.object, t.perturbation);
     sh.pattern = t.color;
 }
 }  // namespace integrator_detail

@@ -83,7 +83,9 @@ void BsdfMaterial::readDiffuse(const SceneObject& o) {
 std::optional<BsdfMaterial::Frame> BsdfMaterial::frameAt(const Shading& s) const {
     Frame f;
     f.z = s.backside ? -s.normal : s.normal;
-    dvec3 x = glm::cross(up_, f.z);
+    // In an instance or mesh the up vector turns with it (Radiance's object transform).
+    dvec3 up = s.object ? s.object->toWorld.vector(up_) : up_;
+    dvec3 x = glm::cross(up, f.z);
     double length = glm::length(x);
     if (!(length > 1e-9)) return std::nullopt;
     f.x = x / length;

@@ -34,11 +34,12 @@ TEST(BsdfMaterial, BadArgumentsSayWhereAndWhat) {
 
 TEST(BsdfMaterial, UpVectorTurnsTheLobe) {
     test::ScopedRayPath path(kDir.c_str());
-    auto value = [&](const char* up) {
+    auto value = [&](const char* up, const ObjectFrame* object = nullptr) {
         test::TestScene t(std::string("void BSDF b 6 0 prism_quarter.xml ") + up + " . 0 0\n"
                           "b polygon p 0 0 12 -1 -1 0 -1 1 0 1 1 0 1 -1 0\n");
         const Material* m = t.render.material(0);
         Shading s{dvec3(0), dvec3(0, 0, -1), dvec3(0, 0, 1), 1.0, false, true, 1.0};
+        s.object = object;
         Lobes lobes;
         EXPECT_TRUE(m->scatter(s, lobes));
         EXPECT_TRUE(lobes.general && lobes.sampleGeneral);  // transmission above -st 0.15
@@ -47,6 +48,13 @@ TEST(BsdfMaterial, UpVectorTurnsTheLobe) {
     // prism_quarter.xml bends transmitted light toward the up vector: light from +y above, going toward −y,
     // is bent back toward the straight-down view when up is +y, further away when up is −y.
     EXPECT_GT(value("0 1 0"), 2 * value("0 -1 0"));
+    // On a surface of an instance or mesh turned half a turn about z, up turns with it (Radiance's object
+    // transform): +y in the object is −y in the world.
+    ObjectFrame halfTurn;
+    halfTurn.toWorld.matrix = glm::dmat4(glm::dvec4(-1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0),
+                                         glm::dvec4(0, 0, 0, 1));
+    halfTurn.toObject = halfTurn.toWorld.inverse();
+    EXPECT_FLOAT_EQ(value("0 1 0", &halfTurn), value("0 -1 0"));
 }
 
 }  // namespace

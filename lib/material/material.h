@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/ray.h"
+#include "geometry/transform.h"
 #include "scene/scene.h"
 #include "spectrum/spectrum.h"
 
@@ -25,6 +26,8 @@ struct Shading {
     // The patterns' colour: multiplies the material's colour (Radiance's pcol); for textured surfaces the
     // normal above is already the perturbed one.
     Spectrum pattern = Spectrum(1.f);
+    // The frame of the instance or mesh the surface is placed by; nullptr for the scene's own surfaces.
+    const ObjectFrame* object = nullptr;
 };
 
 // A specular (Dirac) lobe: a single direction with a coefficient.

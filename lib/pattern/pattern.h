@@ -10,12 +10,6 @@
 
 namespace brume {
 
-// The frame of an instance or mesh, in which patterns on its surfaces work (Radiance's object transform).
-struct ObjectFrame {
-    Transform toWorld;
-    Transform toObject;  // its inverse
-};
-
 // The hit as Radiance's function files see it, in world coordinates (each pattern maps it into its own).
 struct PatternHit {
     dvec3 point;
