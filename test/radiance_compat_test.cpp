@@ -28,6 +28,7 @@ namespace {
 const std::string kRoom = std::string(BRUME_TEST_DATA) + "/radiance/";
 const std::string kInstances = std::string(BRUME_TEST_DATA) + "/radiance_instances/";
 const std::string kPatterns = std::string(BRUME_TEST_DATA) + "/patterns/";
+const std::string kMaterials = std::string(BRUME_TEST_DATA) + "/material_functions/";
 
 using Rgb = std::array<double, 3>;
 
@@ -208,6 +209,15 @@ TEST(RadianceCompat, PatternsTexturesAndMixturesAgreeWithRadiance) {
     test::ScopedRayPath path(kPatterns.c_str());  // the function files, data files and picture are there
     Scene scene = loadScene({kPatterns + "patterns.rad"});
     expectAgreement(kPatterns, scene, "rays.txt", 110, Mode::View, "reference.txt", kPerRay, 8);
+}
+
+// test/data/material_functions: the anisotropic materials (u by constants, by functions in transformed
+// frames, along the normal, under a pattern and a texture) and the materials with function files, their
+// specular parts as direct light (-st 1). Each ray within 1%: small sphere sources, no penumbrae.
+TEST(RadianceCompat, AnisotropicAndFunctionMaterialsAgreeWithRadiance) {
+    test::ScopedRayPath path(kMaterials.c_str());
+    Scene scene = loadScene({kMaterials + "scene.rad"});
+    expectAgreement(kMaterials, scene, "rays.txt", 70, Mode::View, "reference.txt", 0.01, 16);
 }
 
 TEST(RadianceCompat, ViewRaysAgreeWithRadianceForEveryMaterial) {

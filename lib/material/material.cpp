@@ -2,19 +2,22 @@
 
 #include <set>
 
+#include "material/anisotropic.h"
 #include "material/normal.h"
 #include "material/specular.h"
 
 namespace brume {
 
 bool isMaterialType(const std::string& t) {
-    static const std::set<std::string> kTypes{"plastic", "metal", "trans", "mirror", "glass", "dielectric"};
+    static const std::set<std::string> kTypes{"plastic", "metal",  "trans",  "mirror",
+                                              "glass",   "dielectric", "plastic2", "metal2", "trans2"};
     return kTypes.count(t) > 0;
 }
 
 bool isEmitterType(const std::string& t) { return t == "light" || t == "spotlight" || t == "glow" || t == "illum"; }
 
-std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings) {
+std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings,
+                                                     PatternLibrary& functions) {
     std::vector<std::unique_ptr<Material>> materials(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
@@ -23,6 +26,8 @@ std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const M
         else if (o.type == "mirror") materials[i] = std::make_unique<Mirror>(o, settings);
         else if (o.type == "glass") materials[i] = std::make_unique<Glass>(o, settings);
         else if (o.type == "dielectric") materials[i] = std::make_unique<Dielectric>(o);
+        else if (o.type == "plastic2" || o.type == "metal2" || o.type == "trans2")
+            materials[i] = std::make_unique<AnisotropicMaterial>(o, settings, functions);
     }
     return materials;
 }

@@ -13,6 +13,10 @@
 
 namespace brume {
 
+struct PatternHit;
+class PatternEvaluator;
+class PatternLibrary;
+
 // The hit as a material sees it.
 struct Shading {
     dvec3 point;
@@ -25,6 +29,10 @@ struct Shading {
     // The patterns' colour: multiplies the material's colour (Radiance's pcol); for textured surfaces the
     // normal above is already the perturbed one.
     Spectrum pattern = Spectrum(1.f);
+    // For materials with function files (plastic2 …, plasfunc …): the hit as their functions see it (its
+    // normal turned toward the ray, as Radiance's flipsurface turns it) and this thread's evaluator.
+    const PatternHit* hit = nullptr;
+    PatternEvaluator* evaluator = nullptr;
 };
 
 // A specular (Dirac) lobe: a single direction with a coefficient.
@@ -102,9 +110,11 @@ struct MaterialSettings {
     bool backVisible = true;          // -bv
 };
 
-// The material of each scene object that is one (nullptr elsewhere). Throws Error (file:line) on bad
-// arguments or on a type Brume does not have yet.
-std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings);
+// The material of each scene object that is one (nullptr elsewhere); materials with function files compile
+// their expressions into `functions` (the patterns' program). Throws Error (file:line) on bad arguments or
+// on a type Brume does not have yet.
+std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings,
+                                                     PatternLibrary& functions);
 
 bool isMaterialType(const std::string& type);
 bool isEmitterType(const std::string& type);
