@@ -10,8 +10,7 @@ namespace {
 // Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
 const std::set<std::string> kPlannedTypes{
     "mist", "spectrum", "specfile", "specfunc", "specdata", "specpict", "ashik2",
-    "WGMDfunc", "interface", "prism1", "prism2", "BSDF", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata",
-    "metdata", "transdata", "BRTDfunc"};
+    "WGMDfunc", "interface", "prism1", "prism2", "BSDF", "aBSDF", "BRTDfunc"};
 
 // The key of a placed surface in RenderScene::placedLight_.
 uint64_t placedKey(int placement, int surface) { return uint64_t(uint32_t(placement)) << 32 | uint32_t(surface); }

@@ -6,31 +6,20 @@
 
 using namespace brume;
 
-namespace {
-
-std::string error(const std::string& text) {
-    try {
-        test::TestScene s(text);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-}  // namespace
+using test::renderSceneError;
 
 TEST(AnisotropicMaterial, BadArgumentsAreErrorsOfTheirObject) {
-    EXPECT_EQ(error("void plastic2 p 4 1 0 0 .\n0\n5 .5 .5 .5 .1 .2\n"),
+    EXPECT_EQ(renderSceneError("void plastic2 p 4 1 0 0 .\n0\n5 .5 .5 .5 .1 .2\n"),
               "test.rad:1: bad arguments for plastic2 \"p\": expected 6 real arguments, got 5");
-    EXPECT_EQ(error("\nvoid trans2 t 4 1 0 0 .\n0\n6 .5 .5 .5 .1 .2 .3\n"),
+    EXPECT_EQ(renderSceneError("\nvoid trans2 t 4 1 0 0 .\n0\n6 .5 .5 .5 .1 .2 .3\n"),
               "test.rad:2: bad arguments for trans2 \"t\": expected 8 real arguments, got 6");
-    EXPECT_EQ(error("void metal2 m 4 1 0 0 .\n0\n6 .5 .5 .5 .9 0 .2\n"),
+    EXPECT_EQ(renderSceneError("void metal2 m 4 1 0 0 .\n0\n6 .5 .5 .5 .9 0 .2\n"),
               "test.rad:1: bad arguments for metal2 \"m\": roughness too small");
-    EXPECT_EQ(error("void metal2 m 3 1 0 0\n0\n6 .5 .5 .5 .9 .1 .2\n"),
+    EXPECT_EQ(renderSceneError("void metal2 m 3 1 0 0\n0\n6 .5 .5 .5 .9 .1 .2\n"),
               "test.rad:1: bad arguments for metal2 \"m\": too few string arguments");
-    EXPECT_EQ(error("void metal2 m 5 1 0 0 . -rz\n0\n6 .5 .5 .5 .9 .1 .2\n"),
+    EXPECT_EQ(renderSceneError("void metal2 m 5 1 0 0 . -rz\n0\n6 .5 .5 .5 .9 .1 .2\n"),
               "test.rad:1: bad transform for metal2 \"m\"");
-    EXPECT_NE(error("void metal2 m 4 1 0 nosuchname .\n0\n6 .5 .5 .5 .9 .1 .2\n").find("test.rad:1"), std::string::npos);
+    EXPECT_NE(renderSceneError("void metal2 m 4 1 0 nosuchname .\n0\n6 .5 .5 .5 .9 .1 .2\n").find("test.rad:1"), std::string::npos);
 }
 
 // A metal2 lit from one side: its highlight is longer along the smoother direction. Seen at the mirror

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "material/anisotropic.h"
+#include "material/function_brdf.h"
 #include "material/normal.h"
 #include "material/specular.h"
 
@@ -11,7 +12,7 @@ namespace brume {
 bool isMaterialType(const std::string& t) {
     static const std::set<std::string> kTypes{"plastic", "metal",  "trans",  "mirror",
                                               "glass",   "dielectric", "plastic2", "metal2", "trans2"};
-    return kTypes.count(t) > 0;
+    return kTypes.count(t) > 0 || isFunctionBrdfType(t);
 }
 
 bool isEmitterType(const std::string& t) { return t == "light" || t == "spotlight" || t == "glow" || t == "illum"; }
@@ -28,6 +29,8 @@ std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const M
         else if (o.type == "dielectric") materials[i] = std::make_unique<Dielectric>(o);
         else if (o.type == "plastic2" || o.type == "metal2" || o.type == "trans2")
             materials[i] = std::make_unique<AnisotropicMaterial>(o, settings, functions);
+        else if (isFunctionBrdfType(o.type))
+            materials[i] = std::make_unique<FunctionBrdfMaterial>(o, settings, functions);
     }
     return materials;
 }

@@ -9,9 +9,9 @@ Usage: python3 make_rays.py > rays.txt
 """
 import math
 
-lamps = [(1.5, 0.5, 2), (4.5, 0.5, 2), (1.5, 2.5, 4)]
-floor = ["plastic2", "metal2", "parallel", "textured", "spiral"]
-trans = ["trans2", "trans2_circles"]
+lamps = [(1.5, 0.5, 2), (4.5, 0.5, 2), (1.5, 2.5, 4), (7.5, 0.5, 2), (3.5, 2.5, 4)]
+floor = ["plastic2", "metal2", "parallel", "textured", "spiral", "plasfunc", "metfunc", "plasdata", "metdata"]
+trans = ["trans2", "trans2_circles", "transfunc", "transdata"]
 
 
 def norm(v):
@@ -29,7 +29,7 @@ def turn(d, axis, angle):
 
 
 def nearest(p):
-    return min((l for l in lamps if abs(l[1] - p[1]) < 1.5), key=lambda l: (l[0] - p[0]) ** 2 + (l[1] - p[1]) ** 2)
+    return min((l for l in lamps if abs(l[1] - p[1]) < 1.5 and l[2] > p[2]), key=lambda l: (l[0] - p[0]) ** 2 + (l[1] - p[1]) ** 2)
 
 
 def ray(label, p, d, back=1.5):
@@ -50,7 +50,7 @@ for k, name in enumerate(floor):
 for k, name in enumerate(trans):
     for j, (px, py) in enumerate([(0.35, 0.4), (0.7, 0.6)]):
         p = (k + px, 2 + py, 1)
-        lamp = lamps[2]
+        lamp = nearest(p)
         up = norm((lamp[0] - p[0], lamp[1] - p[1], lamp[2] - p[2]))
         ray("%s_through_%d" % (name, j), p, up, 0.6)
         ray("%s_offx_%d" % (name, j), p, norm(turn(up, 1, 0.2)), 0.6)
