@@ -30,6 +30,7 @@ const std::string kInstances = std::string(BRUME_TEST_DATA) + "/radiance_instanc
 const std::string kPatterns = std::string(BRUME_TEST_DATA) + "/patterns/";
 const std::string kText = std::string(BRUME_TEST_DATA) + "/text/";
 const std::string kBsdf = std::string(BRUME_TEST_DATA) + "/bsdf/";
+const std::string kMaterials = std::string(BRUME_TEST_DATA) + "/material_functions/";
 
 using Rgb = std::array<double, 3>;
 
@@ -219,6 +220,16 @@ TEST(RadianceCompat, TextPatternsAndMixturesAgreeWithRadiance) {
     test::ScopedRayPath path(kText.c_str());  // helvet.fnt is not there: Brume's embedded one is read
     Scene scene = loadScene({kText + "text.rad"});
     expectAgreement(kText, scene, "rays.txt", 90, Mode::View, "reference.txt", 0.01, 8);
+}
+
+// test/data/material_functions: the anisotropic materials (u by constants, by functions in transformed
+// frames, along the normal, under a pattern and a texture) and the materials with specular functions and
+// data of the light direction, their specular parts as direct light (-st 1). Each ray within 1%: small
+// sphere sources, no penumbrae.
+TEST(RadianceCompat, AnisotropicAndFunctionMaterialsAgreeWithRadiance) {
+    test::ScopedRayPath path(kMaterials.c_str());
+    Scene scene = loadScene({kMaterials + "scene.rad"});
+    expectAgreement(kMaterials, scene, "rays.txt", 130, Mode::View, "reference.txt", 0.01, 16);
 }
 
 TEST(RadianceCompat, ViewRaysAgreeWithRadianceForEveryMaterial) {

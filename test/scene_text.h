@@ -26,6 +26,16 @@ struct TestScene {
     TestScene(const std::string& text, const MaterialSettings& m = {}) : scene(sceneFromText(text)), render(scene, m) {}
 };
 
+// The message of the Error that building a render scene from `text` throws, or "no error".
+inline std::string renderSceneError(const std::string& text) {
+    try {
+        TestScene s(text);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
 // Sets RAYPATH for the life of the object, restoring it afterwards.
 class ScopedRayPath {
 public:

@@ -92,7 +92,7 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
         const Emitter* e = mat >= 0 ? scene_.emitter(mat) : nullptr;
         auto isTransparent = [&](int m) {
             const std::string& type = scene_.scene().objects[m].type;
-            return type == "glass" || type == "trans" || type == "dielectric";
+            return type == "glass" || type == "trans" || type == "trans2" || type == "dielectric";
         };
         // An illum is seen as its alternate material, or not at all.
         bool transparent = hit && (mat < 0 || (e && e->kind == Emitter::Kind::Illum
@@ -205,9 +205,21 @@ Spectrum Integrator::shadeHit(const Ray& ray, const SurfaceHit& hit, const Shadi
         record->modifierObject = mat;
     }
     if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, hit, sh, *e, state, ctx, record, misEmission);
+    return scatterHit(ray, hit, sh, *scene_.material(mat), state, ctx, record, misEmission);
+}
+
+// The value of a hit on a material. Materials with function files evaluate them on the hit as Radiance
+// does after its flipsurface: the normal turned toward the ray.
+Spectrum Integrator::scatterHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const Material& m,
+                                const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const {
+    PatternHit functionHit = patternHit(ray, hit);
+    if (sh.backside) functionHit.normal = -functionHit.normal;
+    Shading at = sh;
+    at.hit = &functionHit;
+    at.evaluator = &patternEvaluator();
     Lobes lobes;
-    if (!scene_.material(mat)->scatter(sh, lobes)) return passThrough(ray, hit, state, ctx, record, misEmission);
-    return shade(sh, lobes, hit.surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
+    if (!m.scatter(at, lobes)) return passThrough(ray, hit, state, ctx, record, misEmission);
+    return shade(at, lobes, hit.surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
 }
 
 // Each thread's state for evaluating patterns, made on first use for this integrator's scene.
@@ -307,10 +319,9 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
             return sampledSourceShare(e.emitted(-ray.dir) * sh.pattern, li, state, ray, &hit, misEmission);
         // Otherwise an illum is its alternate material, or nothing at all.
         if (e.alternate < 0) return passThrough(ray, hit, state, ctx, record, misEmission);
-        Lobes lobes;
         const Material* alt = scene_.material(e.alternate);
-        if (!alt || !alt->scatter(sh, lobes)) return passThrough(ray, hit, state, ctx, record, misEmission);
-        return shade(sh, lobes, hit.surface, state, ctx, record, misEmission) * lobes.incomingAttenuation;
+        if (!alt) return passThrough(ray, hit, state, ctx, record, misEmission);
+        return scatterHit(ray, hit, sh, *alt, state, ctx, record, misEmission);
     }
     if (sh.backside) {  // emitters radiate from their front only
         if (settings_.materials.backVisible) return Spectrum(0.f);

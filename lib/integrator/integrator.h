@@ -65,6 +65,8 @@ private:
                         RayRecord* record, Spectrum* misEmission) const;
     Spectrum shadeHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, int mat, const PathState& state,
                       Context& ctx, RayRecord* record, Spectrum* misEmission) const;
+    Spectrum scatterHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const Material& m,
+                        const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum escaped(const Ray& ray, const PathState& state, RayRecord* record, Spectrum* misEmission) const;
     Spectrum emitterHit(const Ray& ray, const struct SurfaceHit& hit, const struct Shading& sh, const Emitter& e,
                         const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;

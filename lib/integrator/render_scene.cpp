@@ -9,9 +9,8 @@ namespace {
 
 // Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
 const std::set<std::string> kPlannedTypes{
-    "mist", "spectrum", "specfile", "specfunc", "specdata", "specpict", "plastic2", "metal2", "trans2", "ashik2",
-    "WGMDfunc", "interface", "prism1", "prism2", "aBSDF", "plasfunc", "metfunc", "transfunc", "plasdata",
-    "metdata", "transdata", "BRTDfunc"};
+    "mist", "spectrum", "specfile", "specfunc", "specdata", "specpict", "ashik2",
+    "WGMDfunc", "interface", "prism1", "prism2", "aBSDF", "BRTDfunc"};
 
 // The key of a placed surface in RenderScene::placedLight_.
 uint64_t placedKey(int placement, int surface) { return uint64_t(uint32_t(placement)) << 32 | uint32_t(surface); }
@@ -20,9 +19,9 @@ uint64_t placedKey(int placement, int surface) { return uint64_t(uint32_t(placem
 
 RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) : scene_(scene) {
     checkTypes();
-    modifiers_ = std::make_unique<ModifierChain>(scene);
+    modifiers_ = std::make_unique<ModifierChain>(
+        scene, [&](PatternLibrary& functions) { materials_ = makeMaterials(scene, settings, functions); });
     addAntimatter();
-    materials_ = makeMaterials(scene, settings);
     emitters_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i)
         if (isEmitterType(scene.objects[i].type)) emitters_[i] = std::make_unique<Emitter>(makeEmitter(scene, int(i)));

@@ -13,7 +13,7 @@ std::string errorOf(const std::string& text) {
     test::ScopedRayPath path(kDir.c_str());
     try {
         Scene scene = test::sceneFromText(text);
-        makeMaterials(scene, MaterialSettings{});
+        RenderScene render(scene, MaterialSettings{});
     } catch (const Error& e) {
         return e.what();
     }

@@ -14,6 +14,10 @@
 
 namespace brume {
 
+struct PatternHit;
+class PatternEvaluator;
+class PatternLibrary;
+
 // The hit as a material sees it.
 struct Shading {
     dvec3 point;
@@ -28,6 +32,10 @@ struct Shading {
     Spectrum pattern = Spectrum(1.f);
     // The frame of the instance or mesh the surface is placed by; nullptr for the scene's own surfaces.
     const ObjectFrame* object = nullptr;
+    // For materials with function files (plastic2 …, plasfunc …): the hit as their functions see it (its
+    // normal turned toward the ray, as Radiance's flipsurface turns it) and this thread's evaluator.
+    const PatternHit* hit = nullptr;
+    PatternEvaluator* evaluator = nullptr;
 };
 
 // A specular (Dirac) lobe: a single direction with a coefficient.
@@ -105,9 +113,11 @@ struct MaterialSettings {
     bool backVisible = true;          // -bv
 };
 
-// The material of each scene object that is one (nullptr elsewhere). Throws Error (file:line) on bad
-// arguments or on a type Brume does not have yet.
-std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings);
+// The material of each scene object that is one (nullptr elsewhere); materials with function files compile
+// their expressions into `functions` (the patterns' program). Throws Error (file:line) on bad arguments or
+// on a type Brume does not have yet.
+std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings,
+                                                     PatternLibrary& functions);
 
 bool isMaterialType(const std::string& type);
 bool isEmitterType(const std::string& type);

@@ -18,10 +18,11 @@ bool isPatternType(const std::string& t) {
 
 bool isMixtureType(const std::string& t) { return t == "mixfunc" || t == "mixdata" || t == "mixpict" || t == "mixtext"; }
 
-ModifierChain::ModifierChain(const Scene& scene)
+ModifierChain::ModifierChain(const Scene& scene, const std::function<void(PatternLibrary&)>& alsoCompile)
     : scene_(scene), library_(std::make_unique<PatternLibrary>()), nodes_(scene.objects.size()) {
     // Modifiers precede their users, so one pass in order sees every chain's tail first.
     for (int i = 0; i < int(scene.objects.size()); ++i) build(i);
+    if (alsoCompile) alsoCompile(*library_);
     library_->finish();
 }
 

@@ -2,6 +2,7 @@
 // from the surface's modifier through patterns and textures to a material (or emitter), then through the
 // material's own modifiers; a mixture picks one of two modifiers, or blends two chains of patterns.
 #pragma once
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -21,8 +22,9 @@ class ModifierChain {
 public:
     // Builds the pattern, texture and mixture objects of the scene (function files, data files and pictures
     // loaded once). Throws Error (file:line) for bad arguments, unknown modifiers, a mixture of materials with
-    // a modifier of its own, or a material among a material's modifiers.
-    explicit ModifierChain(const Scene& scene);
+    // a modifier of its own, or a material among a material's modifiers. `alsoCompile`, if given, adds what
+    // else shares the patterns' program (the function files of materials) before it is finished.
+    explicit ModifierChain(const Scene& scene, const std::function<void(PatternLibrary&)>& alsoCompile = nullptr);
     ~ModifierChain();
 
     // Whether the chain from `modifier` varies with the hit (a pattern, texture or mixture is on it).

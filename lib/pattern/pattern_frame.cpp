@@ -17,10 +17,14 @@ PatternFrame PatternFrame::fromArguments(const SceneObject& o, std::span<const s
     return PatternFrame{toWorld, toWorld.inverse()};
 }
 
+Transform PatternFrame::fromWorld(const PatternHit& hit) const {
+    return hit.object ? hit.object->toObject.then(toPattern) : toPattern;
+}
+
 // Radiance's chanvalue(): directions and normals turned into the pattern's axes and kept unit length,
 // points moved, distances scaled; S, T, I, J, K describe the world-to-pattern map itself.
 void PatternFrame::channels(const PatternHit& hit, cal::Channels& c) const {
-    Transform m = hit.object ? hit.object->toObject.then(toPattern) : toPattern;
+    Transform m = fromWorld(hit);
     double s = std::abs(m.scale);
     dvec3 d = m.vector(hit.dir) / s, n = m.vector(hit.normal) / s, p = m.point(hit.point);
     c[cal::Dx] = d.x, c[cal::Dy] = d.y, c[cal::Dz] = d.z;
@@ -38,8 +42,13 @@ void PatternFrame::channels(const PatternHit& hit, cal::Channels& c) const {
     c[cal::Lu] = hit.u, c[cal::Lv] = hit.v;
 }
 
-dvec3 PatternFrame::toWorldPerturbation(const dvec3& d, const PatternHit& hit) const {
+dvec3 PatternFrame::toWorldVector(const dvec3& d, const PatternHit& hit) const {
     Transform m = hit.object ? toWorld.then(hit.object->toWorld) : toWorld;
+    return m.vector(d) / std::abs(m.scale);
+}
+
+dvec3 PatternFrame::toPatternDirection(const dvec3& d, const PatternHit& hit) const {
+    Transform m = fromWorld(hit);
     return m.vector(d) / std::abs(m.scale);
 }
 

@@ -21,8 +21,15 @@ struct PatternFrame {
 
     // The hit in pattern coordinates, as the function file sees it.
     void channels(const PatternHit& hit, cal::Channels& c) const;
-    // A texture's normal perturbation, computed in pattern coordinates, in world coordinates.
-    dvec3 toWorldPerturbation(const dvec3& d, const PatternHit& hit) const;
+    // A vector computed in pattern coordinates (a texture's normal perturbation, an anisotropic material's
+    // u direction), in world coordinates.
+    dvec3 toWorldVector(const dvec3& d, const PatternHit& hit) const;
+    // A world direction as the function file sees directions (turned into its axes, unit length kept).
+    dvec3 toPatternDirection(const dvec3& d, const PatternHit& hit) const;
+
+private:
+    // World → pattern coordinates at this hit (through the instance's frame, if any).
+    Transform fromWorld(const PatternHit& hit) const;
 };
 
 }  // namespace brume

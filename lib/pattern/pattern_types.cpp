@@ -5,8 +5,7 @@
 
 #include <algorithm>
 
-#include "pattern/pattern_evaluator.h"
-#include "pattern/pattern_frame.h"
+#include "pattern/function_object.h"
 #include "pattern/text_pattern.h"
 #include "util/error.h"
 
@@ -14,47 +13,13 @@ namespace brume {
 
 namespace {
 
-// What every function-driven modifier has: its coordinate system, real arguments, and compiled string
-// arguments (values, coordinates), evaluated in its function file's context.
-struct FunctionObject {
-    PatternFrame frame;
-    std::vector<double> args;
-    std::vector<cal::ExprId> exprs;
-    cal::Scope scope;
-
-    // Sets the evaluator up for this object at this hit.
-    cal::Evaluator& begin(const PatternHit& hit, PatternEvaluator& e) const {
-        frame.channels(hit, e.channels);
-        e.eval.begin(e.channels, args);
-        return e.eval;
-    }
-};
-
-[[noreturn]] void badArguments(const SceneObject& o, const std::string& why) {
-    throw Error(o.where, "bad arguments for " + o.type + " \"" + o.name + "\": " + why);
-}
-
-// Radiance's getfunc: strings[file] names the function file; strings[first … first+count) are expressions;
-// the transform starts at the first transform option after them.
-FunctionObject setup(const SceneObject& o, PatternLibrary& lib, size_t file, size_t first, size_t count) {
-    if (o.strings.size() < std::max(file + 1, first + count)) badArguments(o, "too few string arguments");
-    if (!o.integers.empty()) badArguments(o, "no integer arguments expected");
-    FunctionObject f;
-    f.scope = lib.load(o.strings[file], o.where);
-    for (size_t i = first; i < first + count; ++i) f.exprs.push_back(lib.expression(o.strings[i], f.scope, o.where));
-    size_t after = std::max(file + 1, first + count);
-    f.frame = PatternFrame::fromArguments(o, std::span(o.strings).subspan(after));
-    f.args = o.reals;
-    return f;
-}
-
 Spectrum rgb(double r, double g, double b) { return Spectrum(float(r), float(g), float(b)); }
 
 // brightfunc (one value) and colorfunc (three).
 class FunctionColor : public Pattern {
 public:
     FunctionColor(const SceneObject& o, PatternLibrary& lib, int channels)
-        : f_(setup(o, lib, size_t(channels), 0, size_t(channels))) {}
+        : f_(functionObject(o, lib, size_t(channels), 0, size_t(channels))) {}
     void apply(const PatternHit& hit, PatternEvaluator& e, Texturing& t) const override {
         cal::Evaluator& eval = f_.begin(hit, e);
         if (f_.exprs.size() == 1) t.color *= float(eval(f_.exprs[0]));
@@ -68,11 +33,11 @@ private:
 // texfunc: a perturbation vector in pattern coordinates.
 class FunctionTexture : public Pattern {
 public:
-    FunctionTexture(const SceneObject& o, PatternLibrary& lib) : f_(setup(o, lib, 3, 0, 3)) {}
+    FunctionTexture(const SceneObject& o, PatternLibrary& lib) : f_(functionObject(o, lib, 3, 0, 3)) {}
     void apply(const PatternHit& hit, PatternEvaluator& e, Texturing& t) const override {
         cal::Evaluator& eval = f_.begin(hit, e);
         dvec3 d(eval(f_.exprs[0]), eval(f_.exprs[1]), eval(f_.exprs[2]));
-        t.perturbation += f_.frame.toWorldPerturbation(d, hit);
+        t.perturbation += f_.frame.toWorldVector(d, hit);
     }
 
 private:
@@ -133,7 +98,7 @@ public:
         int count = lookup_.interpolate(hit, e, v);
         if (texture_) {
             dvec3 d(lookup_.call(e, 0, v), lookup_.call(e, 1, v), lookup_.call(e, 2, v));
-            t.perturbation += lookup_.object().frame.toWorldPerturbation(d, hit);
+            t.perturbation += lookup_.object().frame.toWorldVector(d, hit);
         } else {
             t.color *= count == 1 ? Spectrum(float(lookup_.call(e, 0, v)))
                                   : rgb(lookup_.call(e, 0, v), lookup_.call(e, 1, v), lookup_.call(e, 2, v));
@@ -169,7 +134,7 @@ DataLookup dataLookup(const SceneObject& o, PatternLibrary& lib, size_t function
     for (const DataGrid* g : t.grids)
         if (size_t(g->dimensions()) != dims) throw Error(o.where, o.type + " \"" + o.name + "\": dimension error");
     size_t file = functions + files;
-    FunctionObject f = setup(o, lib, file, file + 1, dims);
+    FunctionObject f = functionObject(o, lib, file, file + 1, dims);
     addFunctions(o, lib, f, functions, int(files), texture, t);
     return DataLookup(std::move(f), std::move(t), false);
 }
@@ -180,7 +145,7 @@ DataLookup pictureLookup(const SceneObject& o, PatternLibrary& lib, size_t funct
     if (o.strings.size() < functions + 4) badArguments(o, "too few string arguments");
     Table t;
     t.grids.push_back(&lib.picture(o.strings[functions]));
-    FunctionObject f = setup(o, lib, functions + 1, functions + 2, 2);
+    FunctionObject f = functionObject(o, lib, functions + 1, functions + 2, 2);
     addFunctions(o, lib, f, functions, 3, false, t);
     return DataLookup(std::move(f), std::move(t), true);
 }
@@ -195,7 +160,7 @@ int modifierArgument(const Scene& scene, int object, const std::string& name) {
 
 class FunctionMixture : public Mixture {
 public:
-    FunctionMixture(const SceneObject& o, PatternLibrary& lib) : f_(setup(o, lib, 3, 2, 1)) {}
+    FunctionMixture(const SceneObject& o, PatternLibrary& lib) : f_(functionObject(o, lib, 3, 2, 1)) {}
     double coefficient(const PatternHit& hit, PatternEvaluator& e) const override {
         return f_.begin(hit, e)(f_.exprs[0]);
     }

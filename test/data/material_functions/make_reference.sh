@@ -1,0 +1,15 @@
+#!/bin/sh
+# Regenerates reference.txt for the material comparison (test/radiance_compat_test.cpp) from an installed
+# Radiance (oconv and rtrace on PATH, RAYPATH with rayinit.cal). Run it in this directory:
+#     PATH=/path/to/radiance/bin:$PATH RAYPATH=.:/path/to/radiance/lib ./make_reference.sh
+# The options are those of ../radiance/make_reference.sh (deterministic, see its README.md).
+set -eu
+cd "$(dirname "$0")"
+command -v rtrace >/dev/null && command -v oconv >/dev/null || { echo "need Radiance's rtrace and oconv on PATH" >&2; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+oconv scene.rad > "$tmp/scene.oct"
+OPTS="-ab 0 -av 0.1 0.1 0.1 -aw 0 -dt 0 -dc 1 -dj 0 -ds 0.02 -dr 0 -dv+ -bv+ -st 1 -lr 12 -lw 1e-5 -u-" \
+    ../radiance/rtrace_reference.sh "$tmp/scene.oct" rays.txt "" reference.txt 2>"$tmp/warnings"
+sort -u "$tmp/warnings" >&2
+rtrace -version
