@@ -278,9 +278,10 @@ TEST(RadianceCompat, WavefrontMeshAgreesWithItsCompiledMesh) {
 // by !xform, chairs as instances of a frozen octree and cabinets as a compiled mesh. Radiance's reference is its
 // path tracing (-ab 6 -aa 0 -ad 4096 -as 0 -lw 1e-5) averaged over 64 runs: standard error up to 0.24% per
 // sensor and 0.39% per ray; README.md there says how it was made and why -as 0. Brume runs the same six
-// bounces exactly, 16 × 4096 paths per ray (noise up to about 0.5%). Tolerance: each value within 3%, RMS 1%,
-// two to three times the combined noise (measured: RMS 0.49% for the sensors, 0.30% for the rays, at most
-// 1.8%); the issue asks for 2% RMS.
+// bounces exactly, 16 × 4096 paths per ray: noise up to about 0.7% (at the back of the room one 4096-path
+// estimate varies by 2.7%). Tolerance: each value within 3%
+// (four times that), RMS 1% (about twice what the two programs' noise gives; measured: RMS 0.49% for the
+// sensors, 0.30% for the rays, at most 1.8%); the issue asks for 2% RMS.
 TEST(RadianceCompat, DaylitOfficeAgreesWithRadiance) {
     Scene scene = sceneIn(kOffice, "office.rad");
     RenderSettings s = test::fixedSeed();
