@@ -11,7 +11,6 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PATTERNS = os.path.join(ROOT, "test", "data", "patterns")
@@ -62,26 +61,26 @@ def sky_sensors(count):
     return "".join(f"{rng.uniform(-20, 20):.3f} {rng.uniform(-20, 20):.3f} 0.01 0 0 1\n" for _ in range(count))
 
 
-def timed(cmd, cwd, rays, env, repeat):
-    """The fastest of `repeat` runs: (wall seconds, CPU seconds of user + system)."""
-    best = None
+def cpu_seconds(commands, cwd, rays, env, repeat):
+    """CPU time (user + system) of the fastest of `repeat` runs of each command, the commands run in turn so
+    that changes in the machine's load reach them alike."""
+    best = [float("inf")] * len(commands)
     for _ in range(repeat):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        start = time.perf_counter()
-        p = subprocess.run(cmd, cwd=cwd, input=rays.encode(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
-        wall = time.perf_counter() - start
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        if p.returncode != 0:
-            raise RuntimeError(f"{' '.join(cmd)} failed:\n{p.stderr.decode(errors='replace')[-2000:]}")
-        cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
-        best = (wall, cpu) if best is None or cpu < best[1] else best
+        for i, cmd in enumerate(commands):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            p = subprocess.run(cmd, cwd=cwd, input=rays.encode(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               env=env)
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            if p.returncode != 0:
+                raise RuntimeError(f"{' '.join(cmd)} failed:\n{p.stderr.decode(errors='replace')[-2000:]}")
+            best[i] = min(best[i], after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
     return best
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
-    ap.add_argument("--repeat", type=int, default=3, help="runs per measurement (the fastest is kept)")
+    ap.add_argument("--repeat", type=int, default=5, help="runs per measurement (the fastest is kept)")
     args = ap.parse_args()
     brume = os.path.abspath(os.path.join(args.bin, "rtrace"))
     rad_bin = os.environ.get("RADIANCE_BIN", "/tmp/radiance/bin")
@@ -106,26 +105,27 @@ def main():
             f.write(text)
         if have_radiance:
             with open(os.path.join(work, name + ".oct"), "wb") as out:
-                subprocess.run([os.path.join(rad_bin, "oconv"), name + ".rad"], cwd=work, env=rad_env, check=True, stdout=out)
+                subprocess.run([os.path.join(rad_bin, "oconv"), name + ".rad"], cwd=work, env=rad_env, check=True,
+                               stdout=out)
 
     cases = [  # (scene, options, rays, count, what a ray meets)
-        ("panels", ["-ab", "0"], patterns_rays(200_000), 200_000, "view rays -ab 0: patterned panels, luminaire, sky"),
-        ("surfaces", ["-ab", "0"], patterns_rays(200_000), 200_000, "the same without the luminaire's brightdata"),
-        ("sky", ["-I", "-ab", "1", "-aa", "0", "-ad", "256", "-as", "0"], sky_sensors(2000), 2000 * 256,
+        ("panels", ["-ab", "0"], patterns_rays(500_000), 500_000, "view rays -ab 0: patterned panels, luminaire, sky"),
+        ("surfaces", ["-ab", "0"], patterns_rays(500_000), 500_000, "the same without the luminaire's brightdata"),
+        ("sky", ["-I", "-ab", "1", "-aa", "0", "-ad", "256", "-as", "0"], sky_sensors(5000), 5000 * 256,
          "sensors -I -ab 1 -ad 256: gensky sky (skybright.cal)"),
     ]
     print(f"# .cal evaluation cost, one thread, fastest of {args.repeat}, load average {os.getloadavg()[0]:.2f}")
     print(f"{'scene':<8} {'program':<9} {'patterned s':>11} {'plain s':>8} {'ratio':>6} {'extra µs/ray':>12}")
+    programs = [("Brume", [brume, "-h", "-n", "1"], ".rad", brume_env)]
+    if have_radiance:
+        programs.append(("Radiance", [os.path.join(rad_bin, "rtrace"), "-h"], ".oct", rad_env))
     for scene, opts, rays, count, what in cases:
-        programs = [("Brume", [brume, "-h", "-n", "1"] + opts + [scene + ".rad"], [brume, "-h", "-n", "1"] + opts + [scene + "_plain.rad"], brume_env)]
-        if have_radiance:
-            rtrace = os.path.join(rad_bin, "rtrace")
-            programs.append(("Radiance", [rtrace, "-h"] + opts + [scene + ".oct"], [rtrace, "-h"] + opts + [scene + "_plain.oct"], rad_env))
         print(f"# {scene}: {what}; {count} rays")
-        for program, patterned_cmd, plain_cmd, env in programs:
-            patterned = timed(patterned_cmd, work, rays, env, args.repeat)[1]
-            plain = timed(plain_cmd, work, rays, env, args.repeat)[1]
-            print(f"{scene:<8} {program:<9} {patterned:>11.2f} {plain:>8.2f} {patterned / plain:>6.2f} {1e6 * (patterned - plain) / count:>12.3f}")
+        for program, rtrace, ext, env in programs:
+            patterned, plain = cpu_seconds([rtrace + opts + [scene + ext], rtrace + opts + [scene + "_plain" + ext]],
+                                           work, rays, env, args.repeat)
+            extra = 1e6 * (patterned - plain) / count
+            print(f"{scene:<8} {program:<9} {patterned:>11.2f} {plain:>8.2f} {patterned / plain:>6.2f} {extra:>12.3f}")
     if not have_radiance:
         print("# Radiance not found, skipped")
     shutil.rmtree(work)
