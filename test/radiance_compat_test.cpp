@@ -31,6 +31,7 @@ const std::string kPatterns = std::string(BRUME_TEST_DATA) + "/patterns/";
 const std::string kText = std::string(BRUME_TEST_DATA) + "/text/";
 const std::string kBsdf = std::string(BRUME_TEST_DATA) + "/bsdf/";
 const std::string kMaterials = std::string(BRUME_TEST_DATA) + "/material_functions/";
+const std::string kOffice = std::string(BRUME_TEST_DATA) + "/office/";
 
 using Rgb = std::array<double, 3>;
 
@@ -194,12 +195,13 @@ constexpr int kRuns = 128;  // estimates averaged per ray
 // Brume's means for the rays of `rayFile` against Radiance's values in `referenceFile`: each ray within
 // `perRay`, all within kRms.
 void expectAgreement(const std::string& dir, const Scene& scene, const char* rayFile, size_t atLeast, Mode mode,
-                     const char* referenceFile, double perRay = kPerRay, int runs = kRuns) {
+                     const char* referenceFile, double perRay = kPerRay, int runs = kRuns,
+                     const RenderSettings& settings = referenceSettings(), double rms = kRms) {
     auto rays = readRays(dir, rayFile);
     ASSERT_GE(rays.size(), atLeast);
-    auto brume = brumeMeans(scene, rays, mode, runs, referenceSettings());
+    auto brume = brumeMeans(scene, rays, mode, runs, settings);
     Comparison c = compare(rays, brume, readReference(dir, referenceFile), perRay);
-    EXPECT_LT(c.rms(), kRms) << "over " << c.count << " channel values";
+    EXPECT_LT(c.rms(), rms) << "over " << c.count << " channel values";
     if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
 }
 
@@ -353,4 +355,23 @@ TEST(RadianceCompat, BsdfFloorSensorsAgreeWithRadiance) {
     expectWithinNoise(scene, sensors, Mode::Sensor, 4, bsdfSettings(0), direct, 0.005);
     auto oneBounce = readReference(kBsdf, "reference_ab1.txt");
     expectWithinNoise(scene, sensors, Mode::Sensor, 16, bsdfSettings(1), oneBounce, 0.02);
+}
+
+// test/data/office: a daylit office (gensky sky and sun through two glass windows, six bounces) with desks placed
+// by !xform, chairs as instances of a frozen octree and cabinets as a compiled mesh. Radiance's reference is its
+// path tracing (-ab 6 -aa 0 -ad 4096 -as 0 -lw 1e-5) averaged over 64 runs: standard error up to 0.24% per
+// sensor and 0.39% per ray; README.md there says how it was made and why -as 0. Brume runs the same six
+// bounces exactly, 16 × 4096 paths per ray: noise up to about 0.7% (at the back of the room one 4096-path
+// estimate varies by 2.7%). Tolerance: each value within 3%
+// (four times that), RMS 1% (about twice what the two programs' noise gives; measured: RMS 0.49% for the
+// sensors, 0.30% for the rays, at most 1.8%); the issue asks for 2% RMS.
+TEST(RadianceCompat, DaylitOfficeAgreesWithRadiance) {
+    Scene scene = sceneIn(kOffice, "office.rad");
+    RenderSettings s = test::fixedSeed();
+    s.ambientBounces = 6;
+    s.ambientAccuracy = 0;
+    s.ambientDivisions = 4096;
+    s.minWeight = 1e-5;
+    expectAgreement(kOffice, scene, "sensors.txt", 30, Mode::Sensor, "reference_sensors.txt", 0.03, 16, s, 0.01);
+    expectAgreement(kOffice, scene, "rays.txt", 9, Mode::View, "reference_rays.txt", 0.03, 16, s, 0.01);
 }
