@@ -128,12 +128,8 @@ Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s, co
 Spectrum Integrator::sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,
                                    double distance) const {
     PatternHit hit{point, dir, normal, distance};
-    int modifier = scene_.scene().objects[light.object()].modifier;
-    if (!light.isDistant()) {
-        hit.object = scene_.objectFrame(light.surface());
-        modifier = scene_.surfaceModifier(light.surface());
-    }
-    return scene_.modifiers().resolve(modifier, hit, patternEvaluator(), 0.5).texturing.color;
+    if (!light.isDistant()) hit.object = scene_.objectFrame(light.surface());
+    return scene_.modifiers().resolve(scene_.lightModifier(light), hit, patternEvaluator(), 0.5).texturing.color;
 }
 
 void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
@@ -143,7 +139,7 @@ void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSam
     shadow.firstLength = shadow.effectiveLength = s.distance;
     shadow.point = from + (std::isfinite(s.distance) ? s.distance : 0.0) * s.dir;
     shadow.surfaceObject = light.object();
-    shadow.modifierObject = scene_.scene().objects[light.object()].modifier;
+    shadow.modifierObject = scene_.lightModifier(light);
     ctx.tree->rays.push_back({ctx.depth, from, s.dir, shadow});
 }
 

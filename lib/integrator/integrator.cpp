@@ -293,7 +293,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* 
             }
             if (record) {  // a source at infinity: named, facing the ray, at no distance
                 record->surfaceObject = light.object();
-                record->modifierObject = scene_.scene().objects[light.object()].modifier;
+                record->modifierObject = scene_.lightModifier(light);
                 record->normal = record->surfaceNormal = -ray.dir;
             }
             Spectrum le = e.emitted(-ray.dir);
@@ -437,17 +437,24 @@ Spectrum Integrator::glossy(const Shading& sh, const Lobes& lobes, const Surface
         double pdf = transmit ? gaussianTransmissionPdf(sh.dir, wi, alpha2) : wardPdf(wo, wi, sh.normal, alpha2);
         double f = transmit ? gaussianBtdf(sh.dir, wi, alpha2, sh.cosine, -cosI) : wardBrdf(wo, wi, sh.normal, alpha2);
         if (!(pdf > 0)) continue;
-        child.kind = PathState::Kind::Sampled;
-        child.from = sh.point;
-        child.fromWeight = state.weight;
-        child.fromSubdivision = subdivision(state);
-        child.sampledDensity = pdf;
-        Spectrum emission(0.f);
-        Spectrum li = radiance(Ray{sh.point, wi, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,
-                               &emission);
-        sum += coef * (li + emission) * float(f * std::abs(cosI) / pdf * boost);
+        sum += coef * sampledRadiance(sh, surface, wi, pdf, state, child, ctx) * float(f * std::abs(cosI) / pdf * boost);
     }
     return sum;
+}
+
+// What a ray sampled with density `pdf` from a lobe at the hit brings back, the sources it meets included
+// (weighted against next-event estimation by the power heuristic, see emitterHit).
+Spectrum Integrator::sampledRadiance(const Shading& sh, const SurfaceId& surface, const dvec3& dir, double pdf,
+                                     const PathState& state, PathState& child, Context& ctx) const {
+    child.kind = PathState::Kind::Sampled;
+    child.from = sh.point;
+    child.fromWeight = state.weight;
+    child.fromSubdivision = subdivision(state);
+    child.sampledDensity = pdf;
+    Spectrum emission(0.f);
+    Spectrum li = radiance(Ray{sh.point, dir, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,
+                           &emission);
+    return li + emission;
 }
 
 // One sampled ray for a general lobe, weighted against next-event estimation where it meets a source.
@@ -459,15 +466,7 @@ Spectrum Integrator::general(const Shading& sh, const GeneralLobe& lobe, const S
     PathState child;
     float boost;
     if (!spawn(state, child, s->weight, !s->transmits, ctx, boost)) return Spectrum(0.f);
-    child.kind = PathState::Kind::Sampled;
-    child.from = sh.point;
-    child.fromWeight = state.weight;
-    child.fromSubdivision = subdivision(state);
-    child.sampledDensity = s->pdf;
-    Spectrum emission(0.f);
-    Spectrum li = radiance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface}, child, ctx, nullptr,
-                           &emission);
-    return s->weight * (li + emission) * boost;
+    return s->weight * sampledRadiance(sh, surface, s->dir, s->pdf, state, child, ctx) * boost;
 }
 
 // Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified

@@ -86,6 +86,8 @@ private:
                     Context& ctx) const;
     Spectrum general(const Shading& sh, const GeneralLobe& lobe, const SurfaceId& surface, const PathState& state,
                      Context& ctx) const;
+    Spectrum sampledRadiance(const Shading& sh, const SurfaceId& surface, const dvec3& dir, double pdf,
+                             const PathState& state, PathState& child, Context& ctx) const;
     Spectrum directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                               Context& ctx) const;
     Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,

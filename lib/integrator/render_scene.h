@@ -40,6 +40,10 @@ public:
     // at each hit says what shades it.
     bool varies(const SurfaceId& id) const { return modifiers_->varies(surfaceModifier(id)); }
     const ModifierChain& modifiers() const { return *modifiers_; }
+    // The modifier a light's chain starts from: its surface's (see surfaceModifier), or a source's at infinity.
+    int lightModifier(const Light& light) const {
+        return light.isDistant() ? scene_.objects[light.object()].modifier : surfaceModifier(light.surface());
+    }
     // The frame of the instance or mesh a surface is placed by, as patterns see it (Radiance's object
     // transform); nullptr for the scene's own surfaces.
     const ObjectFrame* objectFrame(const SurfaceId& id) const {

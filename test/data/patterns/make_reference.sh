@@ -10,9 +10,5 @@ OPTS="-ab 0 -av 0.1 0.1 0.1 -aw 0 -dt 0 -dc 1 -dj 0 -ds 0.02 -dr 0 -dv+ -bv+ -st
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 oconv patterns.rad > "$tmp/patterns.oct"
-grep -v '^#' rays.txt | awk '{print $1}' > "$tmp/labels"
-grep -v '^#' rays.txt | awk '{print $2, $3, $4, $5, $6, $7}' |
-    rtrace -h- $OPTS "$tmp/patterns.oct" | awk '{print $1, $2, $3}' > "$tmp/values"
-[ "$(wc -l < "$tmp/labels")" -eq "$(wc -l < "$tmp/values")" ] || { echo "rtrace failed" >&2; exit 1; }
-{ echo "# label  R G B  (rtrace $OPTS)"; paste -d' ' "$tmp/labels" "$tmp/values"; } > reference.txt
+OPTS="$OPTS" ../radiance/rtrace_reference.sh "$tmp/patterns.oct" rays.txt "" reference.txt
 rtrace -version
