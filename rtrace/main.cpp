@@ -19,21 +19,17 @@ using namespace brume;
 namespace {
 
 struct Options {
-    std::string immediate;  // -defaults, -help, -version, -features: print and stop
+    ProgramOptions program;
     RenderSettings render;
-    bool irradiance = false, irradianceAtHit = false, header = true, warnings = true, limitDistance = false;
+    bool irradiance = false, irradianceAtHit = false, header = true, limitDistance = false;
     std::string outputSpec = "v";
     char inFormat = 'a', outFormat = 'a';
-    int threads = int(std::max(1u, std::thread::hardware_concurrency())), xres = 0, yres = 0;
+    int xres = 0, yres = 0;
 };
 
 OptionTable makeTable(Options& o) {
     OptionTable t;
-    t.addBool("-w", o.warnings, "warning messages");
-    t.add("-n", 1, "number of threads", [&o](const auto& a) {
-        o.threads = toInt("-n", a[0]);
-        if (o.threads <= 0) throw Error("bad number of processes");
-    }, [&o] { return std::to_string(o.threads); });
+    addProgramOptions(t, o.program);
     t.add("-x", 1, "flush interval (x resolution)", [&o](const auto& a) { o.xres = toInt("-x", a[0]); },
           [&o] { return std::to_string(o.xres); });
     t.add("-y", 1, "y resolution", [&o](const auto& a) { o.yres = toInt("-y", a[0]); },
@@ -53,11 +49,6 @@ OptionTable makeTable(Options& o) {
     t.addAttached("-o", "output values: o d v V w W l L c p n N s m M r x R X ~", [&o](const std::string& v) {
         o.outputSpec = v;
     }, [&o] { return o.outputSpec; });
-    t.add("-e", 1, "error file (append)", [](const auto& a) {
-        if (a[0].find_first_of("=:") != std::string::npos)
-            throw Error("-e expressions (.cal) are not supported by Brume yet");
-        if (!std::freopen(a[0].c_str(), "a", stderr)) throw Error("cannot open error file '" + a[0] + "'");
-    });
     addRenderOptions(t, o.render, o.irradianceAtHit);
     t.addAttached("-p", "output colour space: RGB (others not yet)", [](const std::string& v) {
         if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
@@ -73,14 +64,10 @@ OptionTable makeTable(Options& o) {
     for (const char* name : {"-ti", "-te", "-tI", "-tE"}) t.addUnsupported(name, 1, "trace include/exclude");
     t.addUnsupported("-P", 1, "persistent mode");
     t.addUnsupported("-PP", 1, "persistent mode");
-    for (const char* name : {"-defaults", "-help", "-version", "-features"})
-        t.add(name, 0, "print and exit", [&o, name](const auto&) { o.immediate = name; });
     return t;
 }
 
-void usage(const OptionTable& table, std::ostream& out) {
-    out << "usage: rtrace [options] octree|scene.rad ... < rays\n" << table.usage();
-}
+const char* const kUsage = "usage: rtrace [options] octree|scene.rad ... < rays\n";
 
 // Radiance's header: the octree's header, the command, the software, NCOMP and FORMAT.
 void writeHeader(const Scene& scene, const std::vector<std::string>& command, const ValueWriter& writer, char format) {
@@ -111,48 +98,21 @@ struct InputRay {
 
 int run(int argc, char** argv) {
     std::ios::sync_with_stdio(false);  // std::cin reads rays; unsynchronised it reads them in blocks
-    setProgramName(argv[0]);
     Options o;
     OptionTable table = makeTable(o);
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (!args.empty() && args[0] == "--help") args[0] = "-help";
-    size_t first = table.parse(args);
-    setWarningsEnabled(o.warnings);
-    if (o.immediate == "-help") {
-        usage(table, std::cout);
-        return 0;
-    }
-    if (o.immediate == "-version") {
-        std::printf("Brume %s\n", BRUME_VERSION);
-        return 0;
-    }
-    if (o.immediate == "-defaults") {
-        std::fputs(table.defaults().c_str(), stdout);
-        return 0;
-    }
-    if (o.immediate == "-features") {
-        std::puts("Multithreading\nIrradianceCalc\nImmediateIrradiance\nDistanceLimiting\nReproducibleSampling");
-        return 0;
-    }
-    if (o.render.maxReflections <= 0 && !(o.render.minWeight > 0))
-        throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
-    if (first >= args.size()) {
-        usage(table, std::cerr);
-        throw Error("missing octree or scene file argument");
-    }
-    if (o.render.ambientBounces > 0 && o.render.ambientAccuracy > 0)
-        warnOnce("no irradiance cache yet: -aa > 0 path-traces, and continues past -ab by Russian roulette as Radiance's cache carries further bounces (-aa 0: exactly -ab bounces)");
+    auto line = parseCommandLine(argc, argv, table, o.program, kUsage,
+                                 "Multithreading\nIrradianceCalc\nImmediateIrradiance\nDistanceLimiting\nReproducibleSampling\n");
+    if (!line) return 0;
+    checkRenderSettings(o.render);
     if (o.irradiance && o.irradianceAtHit) throw Error("-I and -i are exclusive");
-    std::vector<std::string> command{programName()};
-    command.insert(command.end(), args.begin(), args.begin() + first);
-    Scene scene = loadScene({args.begin() + first, args.end()});
+    Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
     Integrator integrator(renderScene, o.render);
     ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene);
-    if (o.header) writeHeader(scene, command, writer, o.outFormat);
+    if (o.header) writeHeader(scene, line->command, writer, o.outFormat);
     if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);
 
-    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
     tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
     RayReader reader(std::cin, o.inFormat);
     long limit = o.yres > 0 ? (o.xres > 1 ? long(o.xres) * o.yres : o.yres) : 0;

@@ -100,3 +100,23 @@ TEST(Polygon, DegeneratePolygonsAreRefusedWithAReason) {
     EXPECT_FALSE(makePolygon({{0, 0, 0}, {0, 0, 0}, {1, 0, 0}}, why));
     EXPECT_EQ(why, "fewer than 3 distinct vertices");
 }
+
+// Radiance turns surfaces with negative radii inside out (with a warning) and refuses radii of opposite signs.
+TEST(SceneGeometry, NegativeRadiiTurnSurfacesInsideOutAsRadiance) {
+    Scene scene;
+    auto s = surfacesOf("void plastic p 0 0 5 .5 .5 .5 0 0\n"
+                        "p sphere a 0 0 4 0 0 0 -2\n"
+                        "p bubble b 0 0 4 0 0 0 -2\n"
+                        "p cylinder c 0 0 7 0 0 0 0 0 1 -1\n"
+                        "p cone d 0 0 8 0 0 0 0 0 1 -1 -.5\n",
+                        scene);
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_TRUE(std::get<Sphere>(s[0].shape).inward);
+    EXPECT_EQ(std::get<Sphere>(s[0].shape).radius, 2);
+    EXPECT_FALSE(std::get<Sphere>(s[1].shape).inward);
+    EXPECT_TRUE(std::get<Cone>(s[2].shape).inward);
+    EXPECT_TRUE(std::get<Cone>(s[3].shape).inward);
+    EXPECT_EQ(std::get<Cone>(s[3].shape).topRadius, .5);
+    Scene bad;
+    EXPECT_THROW(surfacesOf("void plastic p 0 0 5 .5 .5 .5 0 0\np cone d 0 0 8 0 0 0 0 0 1 -1 1\n", bad), Error);
+}

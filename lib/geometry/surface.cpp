@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "geometry/polygon.h"
+#include "util/error.h"
 
 namespace brume {
 
@@ -23,10 +24,18 @@ void requireFinite(const SceneObject& o) {
         if (!std::isfinite(r)) throw Error(o.where, "non-finite argument for " + o.type + " \"" + o.name + "\"");
 }
 
+// As Radiance: a negative radius turns the surface inside out (a sphere into a bubble, a cone into a cup),
+// with a warning.
+bool negativeRadius(const SceneObject& o, bool negative) {
+    if (negative) warn(o.where.str() + ": negative radius for " + o.type + " \"" + o.name + "\"");
+    return negative;
+}
+
 Shape sphere(const SceneObject& o) {
     expectArgs(o, 4);
-    if (!(o.reals[3] > 0)) throw Error(o.where, "illegal radius for " + o.type + " \"" + o.name + "\"");
-    return Sphere{point(o, 0), o.reals[3], o.type == "bubble"};
+    double r = o.reals[3];
+    if (!(std::abs(r) > 0)) throw Error(o.where, "illegal radius for " + o.type + " \"" + o.name + "\"");
+    return Sphere{point(o, 0), std::abs(r), (o.type == "bubble") != negativeRadius(o, r < 0)};
 }
 
 Shape cone(const SceneObject& o) {
@@ -34,10 +43,13 @@ Shape cone(const SceneObject& o) {
     expectArgs(o, constantRadius ? 7 : 8);
     double r0 = o.reals[6], r1 = constantRadius ? r0 : o.reals[7];
     dvec3 base = point(o, 0), top = point(o, 3);
-    if (r0 < 0 || r1 < 0 || (r0 == 0 && r1 == 0))
+    // Radiance refuses radii of opposite signs (or both zero), and turns a cone with negative ones inside out.
+    auto sign = [](double r) { return r < 0 ? -1 : r > 0 ? 1 : 0; };
+    if (sign(r0) + sign(r1) == 0 || (constantRadius && r0 == 0))
         throw Error(o.where, "illegal radii for " + o.type + " \"" + o.name + "\"");
+    bool inward = (o.type == "cup" || o.type == "tube") != negativeRadius(o, r0 < 0 || r1 < 0);
     if (glm::length(top - base) == 0) throw Error(o.where, "zero length " + o.type + " \"" + o.name + "\"");
-    return Cone{base, top, r0, r1, o.type == "cup" || o.type == "tube"};
+    return Cone{base, top, std::abs(r0), std::abs(r1), inward};
 }
 
 Shape ring(const SceneObject& o) {

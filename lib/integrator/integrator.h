@@ -54,6 +54,10 @@ public:
     // Irradiance at the first opaque surface the ray meets; light sources give their radiance (rtrace -i).
     RayRecord irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index, RayTree* tree = nullptr) const;
 
+    // The seed of the samples of ray `index` (fixed by -u-, else new each run); pictures seed their pixel
+    // jitter from it too.
+    uint64_t seedFor(uint64_t index) const;
+
 private:
     struct PathState;
     struct Context;
@@ -110,7 +114,6 @@ private:
                float& boost, bool roulette = false) const;
     bool bounceTail() const;
     double misWeightForLight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
-    uint64_t seedFor(uint64_t index) const;
     double subdivision(const PathState& state) const;
     bool exactDirect(const PathState& state) const;
     double primaryTmin(const dvec3& org) const;

@@ -1,24 +1,18 @@
 #include "integrator/render_options.h"
 
 #include <cstdio>
+#include <iostream>
+#include <thread>
+
+#include "util/error.h"
 
 namespace brume {
 
 namespace {
 
-std::string real(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%f", v);
-    return buf;
-}
-
-void addInt(OptionTable& t, const std::string& name, int& v, const std::string& help) {
-    t.add(name, 1, help, [&v, name](const auto& a) { v = toInt(name, a[0]); }, [&v] { return std::to_string(v); });
-}
-
-void addReal(OptionTable& t, const std::string& name, double& v, const std::string& help) {
-    t.add(name, 1, help, [&v, name](const auto& a) { v = toReal(name, a[0]); }, [&v] { return real(v); });
-}
+const auto& addInt = addIntOption;
+const auto& addReal = addRealOption;
+const auto& real = formatReal;
 
 void addColor(OptionTable& t, const std::string& name, Spectrum& v, const std::string& help) {
     t.add(name, 3, help,
@@ -59,8 +53,56 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addUnsupported("-ma", 3, "mist scattering albedo");
     t.addUnsupported("-mg", 1, "mist scattering eccentricity");
     t.addUnsupported("-ms", 1, "mist sampling distance");
+    t.add("-T", 1, "scene time (s) for time-varying content", [&s](const auto& a) { s.time = toReal("-T", a[0]); },
+          [&s] { return s.time ? real(*s.time) : std::string("0 (none)"); });
     addInt(t, "-lr", s.maxReflections, "limit reflections (< 0: Russian roulette past |lr|)");
     addReal(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
+}
+
+void addProgramOptions(OptionTable& t, ProgramOptions& o) {
+    o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    t.addBool("-w", o.warnings, "warning messages");
+    t.add("-n", 1, "number of threads", [&o](const auto& a) {
+        o.threads = toInt("-n", a[0]);
+        if (o.threads <= 0) throw Error("bad number of processes");
+    }, [&o] { return std::to_string(o.threads); });
+    t.add("-e", 1, "error file (append)", [](const auto& a) {
+        if (a[0].find_first_of("=:") != std::string::npos)
+            throw Error("-e expressions (.cal) are not supported by Brume yet");
+        if (!std::freopen(a[0].c_str(), "a", stderr)) throw Error("cannot open error file '" + a[0] + "'");
+    });
+    for (const char* name : {"-defaults", "-help", "-version", "-features"})
+        t.add(name, 0, "print and exit", [&o, name](const auto&) { o.immediate = name; });
+}
+
+std::optional<CommandLine> parseCommandLine(int argc, char** argv, const OptionTable& table, const ProgramOptions& o,
+                                            const std::string& usage, const std::string& features) {
+    setProgramName(argv[0]);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && args[0] == "--help") args[0] = "-help";
+    size_t first = table.parse(args);
+    setWarningsEnabled(o.warnings);
+    if (o.immediate == "-help") std::cout << usage << table.usage();
+    else if (o.immediate == "-version") std::printf("Brume %s\n", BRUME_VERSION);
+    else if (o.immediate == "-defaults") std::fputs(table.defaults().c_str(), stdout);
+    else if (o.immediate == "-features") std::fputs(features.c_str(), stdout);
+    if (!o.immediate.empty()) return std::nullopt;
+    if (first >= args.size()) {
+        std::cerr << usage << table.usage();
+        throw Error("missing octree or scene file argument");
+    }
+    CommandLine c;
+    c.command.push_back(programName());
+    c.command.insert(c.command.end(), args.begin(), args.begin() + first);
+    c.scene.assign(args.begin() + first, args.end());
+    return c;
+}
+
+void checkRenderSettings(const RenderSettings& s) {
+    if (s.maxReflections <= 0 && !(s.minWeight > 0))
+        throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
+    if (s.ambientBounces > 0 && s.ambientAccuracy > 0)
+        warnOnce("no irradiance cache yet: -aa > 0 path-traces, and continues past -ab by Russian roulette as Radiance's cache carries further bounces (-aa 0: exactly -ab bounces)");
 }
 
 }  // namespace brume

@@ -1,5 +1,9 @@
 // The rendering options rtrace and rpict share (-a*, -d*, -l*, -s*, -bv, -u, -i), declared once.
 #pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "integrator/settings.h"
 #include "util/options.h"
 
@@ -7,5 +11,26 @@ namespace brume {
 
 // Registers the options that set `settings`; `irradianceAtHit` receives -i.
 void addRenderOptions(OptionTable& table, RenderSettings& settings, bool& irradianceAtHit);
+
+// What every rendering program takes besides: -w, -n, -e, and -defaults -help -version -features, which
+// print and stop (recorded in `immediate`).
+struct ProgramOptions {
+    std::string immediate;
+    bool warnings = true;
+    int threads = 0;  // 0: one per hardware thread
+};
+void addProgramOptions(OptionTable& table, ProgramOptions& options);
+// A rendering program's command line: the command as its output header names it (program and options) and
+// the scene files after the options.
+struct CommandLine {
+    std::vector<std::string> command, scene;
+};
+// Sets the program name, parses argv with `table` ("--help" taken as -help) and applies -w. Prints what an
+// immediate option asks for (usage, version, defaults, `features`) and returns nullopt, so the program
+// stops; throws Error after the usage when no scene is named.
+std::optional<CommandLine> parseCommandLine(int argc, char** argv, const OptionTable& table, const ProgramOptions& options,
+                                            const std::string& usage, const std::string& features);
+// Refuses settings that cannot work together; warns about -aa until the irradiance cache exists.
+void checkRenderSettings(const RenderSettings& settings);
 
 }  // namespace brume

@@ -1,6 +1,7 @@
 // Everything on the command line that changes computed values (the -a, -d, -l, -s, -b and -u options).
 #pragma once
 #include <cstdint>
+#include <optional>
 
 #include "material/material.h"
 #include "spectrum/spectrum.h"
@@ -28,6 +29,7 @@ struct RenderSettings {
     MaterialSettings materials;      // -st, -bv
     bool randomSampling = true;      // -u: a new seed each run; -u- a fixed one
     uint64_t seed = 0;               // used when -u-
+    std::optional<double> time;      // -T: the scene's instant (s), for time-varying content (none yet: smoke, later)
 };
 
 }  // namespace brume

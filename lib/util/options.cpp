@@ -1,6 +1,7 @@
 #include "util/options.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -12,6 +13,20 @@ namespace brume {
 void OptionTable::add(const std::string& name, int count, const std::string& help, Apply apply,
                       std::function<std::string()> current) {
     options_.push_back({name, Kind::Separate, count, help, std::move(apply), std::move(current)});
+}
+
+void addIntOption(OptionTable& t, const std::string& name, int& v, const std::string& help) {
+    t.add(name, 1, help, [&v, name](const auto& a) { v = toInt(name, a[0]); }, [&v] { return std::to_string(v); });
+}
+
+void addRealOption(OptionTable& t, const std::string& name, double& v, const std::string& help) {
+    t.add(name, 1, help, [&v, name](const auto& a) { v = toReal(name, a[0]); }, [&v] { return formatReal(v); });
+}
+
+std::string formatReal(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%f", v);
+    return buf;
 }
 
 void OptionTable::addUnsupported(const std::string& name, int count, const std::string& help) {

@@ -51,6 +51,11 @@ private:
     std::vector<Option> options_;
 };
 
+// Options holding one number, printed by -defaults as Radiance prints them ("%f" for reals).
+void addIntOption(OptionTable& table, const std::string& name, int& value, const std::string& help);
+void addRealOption(OptionTable& table, const std::string& name, double& value, const std::string& help);
+std::string formatReal(double value);  // "%f"
+
 // Argument conversion with clear errors naming the option: "bad value 'x' for option -ab".
 int toInt(const std::string& option, const std::string& text);
 double toReal(const std::string& option, const std::string& text);

@@ -176,6 +176,17 @@ std::optional<ViewRay> View::ray(double x, double y) const {
     return r;
 }
 
+double View::aspect() const {
+    Frame f;
+    return makeFrame(*this, f).empty() ? std::sqrt(f.vn2 / f.hn2) : 0;
+}
+
+void normalizeResolution(double viewAspect, double& pixelAspect, int& xres, int& yres) {
+    if (pixelAspect <= kTiny) pixelAspect = viewAspect * xres / yres;
+    else if (viewAspect * xres > pixelAspect * yres) xres = int(yres / viewAspect * pixelAspect + .5);
+    else yres = int(xres * viewAspect / pixelAspect + .5);
+}
+
 std::string View::options() const {
     std::string s = "-vt";
     s += type;

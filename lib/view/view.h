@@ -55,12 +55,19 @@ struct View {
     // for an invalid view.
     std::optional<ViewRay> ray(double x, double y) const;
 
+    // Height over width of the view's image (Radiance's viewaspect); 0 for an invalid view.
+    double aspect() const;
+
     // Radiance's full option string, as in a VIEW= header line: "-vtv -vp 0 0 0 -vd 0 1 0 ...", no leading
     // space.
     std::string options() const;
 
     bool operator==(const View&) const = default;
 };
+
+// Radiance's normaspect: with pixelAspect 0, keeps the resolution and sets the pixel aspect (height over
+// width of a pixel) that fits the view; otherwise reduces xres or yres so that pixels of that aspect fit it.
+void normalizeResolution(double viewAspect, double& pixelAspect, int& xres, int& yres);
 
 // Reads one view option at args[0] into `view` and returns how many arguments it used (the option and its
 // values); 0 when args[0] is not a view option (-vf, which names a file, is left to the caller). Throws

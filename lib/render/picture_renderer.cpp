@@ -1,0 +1,163 @@
+#include "render/picture_renderer.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/progress.h"
+
+namespace brume {
+
+namespace {
+
+// The first-pass sample rows or columns: every `spacing`-th, and the last.
+std::vector<int> gridLines(int n, int spacing) {
+    std::vector<int> lines;
+    for (int i = 0; i < n; i += spacing) lines.push_back(i);
+    if (lines.back() != n - 1) lines.push_back(n - 1);
+    return lines;
+}
+
+// Radiance's test for samples too different to interpolate between: any channel differing by more than
+// `threshold` times the smaller value.
+bool differ(const float* a, const float* b, double threshold) {
+    for (int i = 0; i < 3; ++i)
+        if (a[i] - b[i] > threshold * b[i] || b[i] - a[i] > threshold * a[i]) return true;
+    return false;
+}
+
+class Renderer {
+public:
+    Renderer(const Integrator& integrator, const View& view, const PictureSettings& s, ProgressMeter* progress)
+        : integrator_(integrator), view_(view), s_(s), progress_(progress), w_(s.xres), h_(s.yres) {
+        out_.picture.width = w_, out_.picture.height = h_;
+        out_.picture.pixelAspect = s.pixelAspect;
+        out_.picture.pixels.assign(size_t(w_) * h_ * 3, 0.f);
+        depth_.assign(size_t(w_) * h_, 0.f);
+        traced_.assign(size_t(w_) * h_, 0);
+    }
+
+    RenderedPicture run() {
+        if (progress_) progress_->start(long(w_) * h_);
+        if (s_.sampleSpacing <= 1 || w_ < 2 || h_ < 2) traceAll();
+        else adaptive();
+        if (progress_) progress_->finish();
+        if (s_.depth) out_.depth = std::move(depth_);
+        return std::move(out_);
+    }
+
+private:
+    size_t at(int x, int row) const { return size_t(row) * w_ + x; }
+    float* pixel(int x, int row) { return out_.picture.at(x, row); }
+
+    // One ray through pixel (x, row): its value and distance stored, the pixel marked traced.
+    void trace(int x, int row) {
+        size_t i = at(x, row);
+        uint64_t index = i;
+        double jx = 0.5, jy = 0.5;
+        if (s_.jitter > 0) {
+            Random random(integrator_.seedFor(index) ^ 0x6a09e667f3bcc909ULL, index);
+            jx += s_.jitter * (0.5 - random.uniform());
+            jy += s_.jitter * (0.5 - random.uniform());
+        }
+        // The view's y runs up from the bottom edge; rows run down from the top.
+        std::optional<ViewRay> ray = view_.ray((x + jx) / w_, (h_ - 1 - row + jy) / h_);
+        traced_[i] = 1;
+        if (!ray) return;  // outside a fisheye's circle: black, as Radiance
+        RayRecord rec = s_.irradiance
+                            ? integrator_.irradianceAtHit(ray->org, ray->dir, index)
+                            : integrator_.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);
+        for (int c = 0; c < 3; ++c) pixel(x, row)[c] = rec.value[c];
+        // Radiance's ray distance: the mirror image's when the mirrored light dominates, else the effective one.
+        bool mirrored = brightness(rec.mirrored) > 0.5f * brightness(rec.value);
+        double d = mirrored ? rec.mirroredLength : rec.effectiveLength;
+        depth_[i] = std::isfinite(d) ? float(d) : 0.f;
+    }
+
+    void traceAll() {
+        tbb::parallel_for(0, h_, [&](int row) {
+            for (int x = 0; x < w_; ++x) trace(x, row);
+            if (progress_) progress_->advance(w_, w_);
+        });
+    }
+
+    // First pass on the grid; tiles whose corners differ are traced whole, the others interpolated.
+    void adaptive() {
+        std::vector<int> xs = gridLines(w_, s_.sampleSpacing), ys = gridLines(h_, s_.sampleSpacing);
+        tbb::parallel_for(size_t(0), ys.size(), [&](size_t j) {
+            for (int x : xs) trace(x, ys[j]);
+        });
+        std::vector<char> busy((xs.size() - 1) * (ys.size() - 1));
+        for (size_t j = 0; j + 1 < ys.size(); ++j)
+            for (size_t i = 0; i + 1 < xs.size(); ++i) {
+                const float* c[4] = {pixel(xs[i], ys[j]), pixel(xs[i + 1], ys[j]), pixel(xs[i], ys[j + 1]),
+                                     pixel(xs[i + 1], ys[j + 1])};
+                bool b = false;
+                for (int p = 0; p < 4 && !b; ++p)
+                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], s_.sampleThreshold);
+                busy[j * (xs.size() - 1) + i] = b;
+            }
+        // Tile (i, j) spans columns xs[i]..xs[i+1] and rows ys[j]..ys[j+1], edges included: a pixel on an
+        // edge is traced when any tile holding it is busy, else interpolated along the edge alone, which both
+        // tiles agree on.
+        std::vector<int> tileOfX(w_), tileOfY(h_);
+        for (size_t i = 0; i + 1 < xs.size(); ++i) std::fill(&tileOfX[xs[i]], &tileOfX[xs[i + 1]] + 1, int(i));
+        for (size_t j = 0; j + 1 < ys.size(); ++j) std::fill(&tileOfY[ys[j]], &tileOfY[ys[j + 1]] + 1, int(j));
+        auto isBusy = [&](int x, int row) {
+            size_t nx = xs.size() - 1;
+            int i = tileOfX[x], j = tileOfY[row];
+            bool b = busy[j * nx + i];
+            if (i > 0 && x == xs[i]) b = b || busy[j * nx + i - 1];
+            if (j > 0 && row == ys[j]) b = b || busy[(j - 1) * nx + i];
+            if (i > 0 && j > 0 && x == xs[i] && row == ys[j]) b = b || busy[(j - 1) * nx + i - 1];
+            return b;
+        };
+        tbb::parallel_for(0, h_, [&](int row) {
+            long samples = 0;
+            for (int x = 0; x < w_; ++x) {
+                if (traced_[at(x, row)]) continue;
+                if (isBusy(x, row)) trace(x, row), ++samples;
+                else interpolate(x, row, xs[tileOfX[x]], xs[tileOfX[x] + 1], ys[tileOfY[row]], ys[tileOfY[row] + 1]);
+            }
+            if (progress_) progress_->advance(w_, samples);
+        });
+    }
+
+    // Bilinear between the tile's traced corners (x0, y0)-(x1, y1).
+    void interpolate(int x, int row, int x0, int x1, int y0, int y1) {
+        double u = double(x - x0) / (x1 - x0), v = double(row - y0) / (y1 - y0);
+        double wt[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
+        size_t corner[4] = {at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)};
+        float* p = pixel(x, row);
+        float d = 0;
+        for (int k = 0; k < 4; ++k) {
+            const float* c = &out_.picture.pixels[3 * corner[k]];
+            for (int ch = 0; ch < 3; ++ch) p[ch] += float(wt[k]) * c[ch];
+            d += float(wt[k]) * depth_[corner[k]];
+        }
+        depth_[at(x, row)] = d;
+    }
+
+    const Integrator& integrator_;
+    const View& view_;
+    const PictureSettings& s_;
+    ProgressMeter* progress_;
+    int w_, h_;
+    RenderedPicture out_;
+    std::vector<float> depth_;
+    std::vector<char> traced_;
+};
+
+}  // namespace
+
+void fitResolution(const View& view, PictureSettings& s) {
+    normalizeResolution(view.aspect(), s.pixelAspect, s.xres, s.yres);
+}
+
+RenderedPicture renderPicture(const Integrator& integrator, const View& view, const PictureSettings& settings,
+                              ProgressMeter* progress) {
+    return Renderer(integrator, view, settings, progress).run();
+}
+
+}  // namespace brume

@@ -1,0 +1,40 @@
+// Pictures from views, as Radiance's rpict makes them: one ray per pixel through a jittered point of the
+// pixel (-pj), optionally through a lens (-pd); with -ps > 1 a first pass samples every -ps-th pixel and the
+// pixels between samples that agree within -pt are interpolated, the others traced.
+// A pixel's samples are seeded by its index in scanline order (top row first), as the rays `vwrays`
+// writes for the same view, so a traced pixel equals `vwrays | rtrace` on the same ray.
+#pragma once
+#include <vector>
+
+#include "integrator/integrator.h"
+#include "io/picture.h"
+#include "view/view.h"
+
+namespace brume {
+
+class ProgressMeter;
+
+struct PictureSettings {
+    int xres = 512, yres = 512;     // -x -y: the largest resolution; one is reduced to fit the view's aspect
+    double pixelAspect = 1;         // -pa: height over width of a pixel; 0 keeps -x and -y as given
+    double jitter = 0.67;           // -pj: the fraction of a pixel over which its sample point is spread
+    double aperture = 0;            // -pd: lens diameter in world units, focused at the length of -vd
+    int sampleSpacing = 4;          // -ps: pixels between the samples of the first pass
+    double sampleThreshold = 0.05;  // -pt: relative difference between samples above which pixels are traced
+    bool irradiance = false;        // -i: irradiance at the surfaces seen, not their radiance
+    bool depth = false;             // keep each pixel's distance (-z)
+};
+
+struct RenderedPicture {
+    Picture picture;           // resolution after fitting, pixel aspect, pixels (no header)
+    std::vector<float> depth;  // distance to what each pixel sees (top row first), when asked
+};
+
+// The resolution and pixel aspect `settings` give for `view` (Radiance's normaspect).
+void fitResolution(const View& view, PictureSettings& settings);
+
+// Renders a valid `view`; `settings` must have been fitted. Progress counts pixels.
+RenderedPicture renderPicture(const Integrator& integrator, const View& view, const PictureSettings& settings,
+                              ProgressMeter* progress = nullptr);
+
+}  // namespace brume

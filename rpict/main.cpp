@@ -1,0 +1,231 @@
+// rpict: pictures of a scene from views, as Radiance's rpict (see man/rpict.1).
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "integrator/integrator.h"
+#include "integrator/render_options.h"
+#include "render/camera_path.h"
+#include "render/frame_output.h"
+#include "render/picture_renderer.h"
+#include "render/progress.h"
+#include "scene/reader.h"
+#include "util/header.h"
+#include "view/view_options.h"
+
+using namespace brume;
+
+namespace {
+
+const char* const kUsage = "usage: rpict [options] octree|scene.rad ... > picture.hdr\n";
+
+struct Options {
+    ProgramOptions program;
+    RenderSettings render;
+    PictureSettings picture;
+    View view;
+    double reportInterval = 0;
+    int sequenceStart = 0;
+    std::string output, depthOutput, cameraPath;
+    double framesPerSecond = 0;
+    bool exrFloat = false;
+
+    Options() {  // Radiance's rpict defaults, where they differ from rtrace's
+        render.directThreshold = .05, render.directCertainty = .5, render.sourceSubdivision = .25;
+        render.directRelays = 1, render.materials.specularThreshold = .15;
+        render.ambientAccuracy = .2, render.ambientResolution = 64, render.ambientDivisions = 512;
+        render.ambientSupersamples = 128, render.maxReflections = 7, render.randomSampling = false;
+    }
+};
+
+const auto& addInt = addIntOption;
+const auto& addReal = addRealOption;
+
+void addPictureOptions(OptionTable& t, PictureSettings& p) {
+    addInt(t, "-x", p.xres, "x resolution");
+    addInt(t, "-y", p.yres, "y resolution");
+    addReal(t, "-pa", p.pixelAspect, "pixel aspect ratio (height/width; 0: keep -x and -y)");
+    addReal(t, "-pj", p.jitter, "pixel jitter");
+    addReal(t, "-pd", p.aperture, "pixel depth of field: lens diameter, focused at the length of -vd");
+    addInt(t, "-ps", p.sampleSpacing, "pixel sample spacing of the first pass");
+    addReal(t, "-pt", p.sampleThreshold, "pixel threshold: relative difference traced between samples");
+    t.add("-pm", 1, "pixel motion blur (only 0)", [](const auto& a) {
+        if (toReal("-pm", a[0]) != 0) throw Error("motion blur (-pm) is not supported by Brume yet");
+    }, [] { return std::string("0.000000"); });
+}
+
+OptionTable makeTable(Options& o) {
+    OptionTable t;
+    addProgramOptions(t, o.program);
+    addViewOptions(t, o.view);
+    addPictureOptions(t, o.picture);
+    addRenderOptions(t, o.render, o.picture.irradiance);
+    addReal(t, "-t", o.reportInterval, "seconds between progress reports (0: none, or a live line on a terminal)");
+    addInt(t, "-S", o.sequenceStart, "sequence: render a picture per view line on the standard input, numbered from this");
+    t.add("-o", 1, "output file (pattern with %d for sequences; .exr: OpenEXR)", [&o](const auto& a) { o.output = a[0]; });
+    t.add("-z", 1, "depth output file (floats per pixel; pattern with %d for sequences)",
+          [&o](const auto& a) { o.depthOutput = a[0]; });
+    t.add("-path", 1, "camera path: lines of time px py pz dx dy dz [ux uy uz]",
+          [&o](const auto& a) { o.cameraPath = a[0]; });
+    addReal(t, "-fps", o.framesPerSecond, "frames per second along -path (0: a frame per key)");
+    t.addAttached("-ef", "OpenEXR pixels: h (half) or f (float)", [&o](const std::string& v) {
+        if (v != "h" && v != "f") throw Error("bad OpenEXR pixel type '-ef" + v + "' (h or f)");
+        o.exrFloat = v == "f";
+    }, [&o] { return std::string(o.exrFloat ? "f" : "h"); });
+    t.addAttached("-p", "output colour space: RGB or XYZ", [](const std::string& v) {
+        if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
+    }, [] { return std::string("RGB"); });
+    t.addUnsupported("-pc", 8, "output colour primaries");
+    t.addUnsupported("-cs", 1, "spectral samples");
+    t.addUnsupported("-cw", 2, "spectral range");
+    t.addUnsupported("-r", 1, "recover from an interrupted picture");
+    t.addUnsupported("-ro", 1, "recover into the same picture");
+    t.addUnsupported("-P", 1, "persistent mode");
+    t.addUnsupported("-PP", 1, "persistent mode");
+    t.addAttached("-ap", "photon maps (not supported)",
+                  [](const std::string&) { throw Error("photon maps (-ap) are not supported by Brume"); });
+    t.addUnsupported("-am", 1, "photon search radius");
+    return t;
+}
+
+// A frame to render: its view, number and scene time.
+struct Frame {
+    View view;
+    int number;
+    std::optional<double> time;
+};
+
+// The next view of a -S sequence: view lines on the standard input change the view cumulatively (as
+// Radiance's rpict); a line may also set the scene time with -T.
+bool nextViewLine(View& view, std::optional<double>& time) {
+    std::string line;
+    while (std::getline(std::cin, line)) {
+        if (!isViewLine(line) || parseViewString(view, line) == 0) continue;
+        std::istringstream words(line);
+        for (std::string w; words >> w;)
+            if (w == "-T" && words >> w) time = toReal("-T", w);
+        return true;
+    }
+    return false;
+}
+
+std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::string>& command, const Frame& f,
+                                   const PictureSettings& p) {
+    std::vector<std::string> h;
+    for (const std::string& line : scene.headerLines)
+        if (line.rfind("FORMAT=", 0) != 0 && line != "#?RADIANCE") h.push_back(line);
+    h.push_back(commandLine(command));
+    std::istringstream dates(softwareAndDates());
+    for (std::string line; std::getline(dates, line);) h.push_back(line);
+    h.push_back("VIEW= " + f.view.options());
+    char buf[64];
+    if (p.pixelAspect != 1) {
+        std::snprintf(buf, sizeof buf, "PIXASPECT=%f", p.pixelAspect);
+        h.push_back(buf);
+    }
+    if (f.time) {
+        std::snprintf(buf, sizeof buf, "SCENETIME= %.10g", *f.time);
+        h.push_back(buf);
+    }
+    if (f.number > 0) h.push_back("FRAME=" + std::to_string(f.number));
+    return h;
+}
+
+void writeDepth(const std::string& path, const std::vector<float>& depth) {
+    std::string temporary = path + ".tmp";
+    std::ofstream out(temporary, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(depth.data()), std::streamsize(depth.size() * sizeof(float)));
+    if (!out.flush() || std::rename(temporary.c_str(), path.c_str()) != 0) {
+        std::remove(temporary.c_str());
+        throw Error("cannot write depth file \"" + path + "\"");
+    }
+}
+
+class Rpict {
+public:
+    Rpict(const Options& o, const Scene& scene, std::vector<std::string> command)
+        : o_(o), scene_(scene), renderScene_(scene, o.render.materials), command_(std::move(command)),
+          progress_("rpict", o.reportInterval) {}
+
+    void render(const Frame& f) {
+        f.view.validate();
+        std::string picturePath = o_.output.empty() ? "" : frameFileName(o_.output, f.number);
+        if (!picturePath.empty() && !claimFile(picturePath)) {
+            if (namesFrames(o_.output)) return;  // another process has (or had) this frame
+            throw Error("cannot open output file \"" + picturePath + "\": it exists");
+        }
+        try {
+            renderTo(f, picturePath);
+        } catch (...) {
+            if (!picturePath.empty()) std::remove(picturePath.c_str());  // release the claim
+            throw;
+        }
+    }
+
+private:
+    void renderTo(const Frame& f, const std::string& picturePath) {
+        PictureSettings p = o_.picture;
+        p.depth = !o_.depthOutput.empty();
+        fitResolution(f.view, p);
+        if (p.xres <= 0 || p.yres <= 0) throw Error("resolution " + std::to_string(p.xres) + "x" + std::to_string(p.yres) + " has no pixels");
+        RenderSettings settings = o_.render;
+        settings.time = f.time;
+        Integrator integrator(renderScene_, settings);
+        RenderedPicture r = renderPicture(integrator, f.view, p, &progress_);
+        r.picture.header = headerFor(scene_, command_, f, p);
+        if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture);
+        else writePictureFile(picturePath, r.picture, o_.exrFloat);
+        if (p.depth) writeDepth(frameFileName(o_.depthOutput, f.number), r.depth);
+    }
+
+    const Options& o_;
+    const Scene& scene_;
+    RenderScene renderScene_;
+    std::vector<std::string> command_;
+    ProgressMeter progress_;
+};
+
+int run(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);
+    Options o;
+    OptionTable table = makeTable(o);
+    auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\nDepthOfField\n");
+    if (!line) return 0;
+    checkRenderSettings(o.render);
+    if (o.sequenceStart < 0) throw Error("bad sequence start " + std::to_string(o.sequenceStart));
+    if (o.sequenceStart > 0 && !o.cameraPath.empty()) throw Error("-S and -path are exclusive");
+    bool sequence = o.sequenceStart > 0 || !o.cameraPath.empty();
+    if (!sequence && !o.output.empty() && namesFrames(o.output))
+        throw Error("output pattern '" + o.output + "' names frames, but there is no sequence (-S or -path)");
+    o.view.validate();
+    std::optional<CameraPath> path;
+    if (!o.cameraPath.empty()) path = CameraPath::read(o.cameraPath, o.view.vu);
+
+    Scene scene = loadScene(line->scene);
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
+    tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
+    Rpict rpict(o, scene, line->command);
+    if (path) {
+        int number = std::max(o.sequenceStart, 1);
+        for (const TimedView& tv : path->frames(o.view, o.framesPerSecond)) rpict.render({tv.view, number++, tv.time});
+    } else if (o.sequenceStart > 0) {
+        Frame f{o.view, o.sequenceStart, o.render.time};
+        while (nextViewLine(f.view, f.time)) {
+            rpict.render(f);
+            f.number++;
+        }
+    } else {
+        rpict.render({o.view, 0, o.render.time});
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return runReportingErrors([&] { return run(argc, argv); });
+}

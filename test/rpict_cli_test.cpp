@@ -1,0 +1,161 @@
+// rpict as a program: its picture stream and header, sequences and file outputs, its errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "cli.h"
+#include "io/picture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using brume_test::Output;
+
+fs::path dir() { return brume_test::scratchDir("rpict"); }
+
+Output rpict(const std::string& args, const std::string& input = "") {
+    std::ofstream(dir() / "in") << input;
+    return brume_test::runCaptured("cd " + dir().string() + " && " + BRUME_BIN_DIR + std::string("/rpict ") + args + " < in",
+                                   dir());
+}
+
+brume::Picture picture(const std::string& bytes) {
+    std::istringstream in(bytes);
+    return brume::readRadiancePicture(in, "rpict output");
+}
+
+const char* kScene =
+    "void light lum 0 0 3 100 100 100\n"
+    "lum sphere bulb 0 0 4 0 3 2 0.2\n"
+    "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+    "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n";
+
+class RpictCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        fs::remove_all(dir());
+        std::ofstream(dir() / "s.rad") << kScene;
+    }
+};
+
+const char* kView = "-vp 0 -2 1 -vd 0 1 -0.2 -vh 50 -vv 40";
+
+}  // namespace
+
+// Radiance's picture header: the command, SOFTWARE=, VIEW= (the full view, readable back), PIXASPECT= only
+// when not 1, FORMAT=, and the resolution line; -pa 1 fits the resolution to the view's aspect.
+TEST_F(RpictCli, HeaderFollowsRadianceLayout) {
+    Output r = rpict(std::string("-x 40 -y 40 ") + kView + " s.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("#?RADIANCE\nrpict -x 40 -y 40 -vp 0 -2 1", 0), 0u) << r.out.substr(0, 200);
+    EXPECT_NE(r.out.find("\nSOFTWARE= Brume "), std::string::npos);
+    EXPECT_NE(r.out.find("\nVIEW= -vtv -vp 0 -2 1 -vd 0 1 -0.2 -vu 0 0 1 -vh 50 -vv 40 -vo 0 -va 0 -vs 0 -vl 0\n"),
+              std::string::npos);
+    EXPECT_EQ(r.out.find("PIXASPECT"), std::string::npos);
+    EXPECT_NE(r.out.find("\nFORMAT=32-bit_rle_rgbe\n\n-Y "), std::string::npos);
+    brume::Picture p = picture(r.out);
+    EXPECT_EQ(p.width, 40);
+    EXPECT_EQ(p.height, int(40 * std::tan(20 * M_PI / 180) / std::tan(25 * M_PI / 180) + .5));
+}
+
+// -pa 0 keeps an odd resolution and states the pixel aspect, as Radiance.
+TEST_F(RpictCli, OddResolutionWithFreePixelAspect) {
+    Output r = rpict(std::string("-x 9 -y 8 -pa 0 -vh 45 -vv 45 s.rad"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\nPIXASPECT=1.125000\n"), std::string::npos);
+    brume::Picture p = picture(r.out);
+    EXPECT_EQ(p.width, 9);
+    EXPECT_EQ(p.height, 8);
+}
+
+// -S: one picture per view line on stdin, views cumulative, numbered into -o names; an existing frame is
+// skipped (another process renders it) and left as it was.
+TEST_F(RpictCli, SequencesWriteNumberedFramesAndSkipExistingOnes) {
+    std::ofstream(dir() / "f2.hdr") << "taken";
+    Output r = rpict(std::string("-x 8 -y 8 -S 1 -o f%d.hdr s.rad"),
+                     "VIEW= -vp 0 -2 1 -vd 0 1 0\nnot a view\nrpict -vh 30\nVIEW= -vp 0 -3 1 -T 2.5\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    brume::Picture f1 = brume::readPicture((dir() / "f1.hdr").string()), f3 = brume::readPicture((dir() / "f3.hdr").string());
+    EXPECT_EQ(brume_test::slurp(dir() / "f2.hdr"), "taken");
+    auto has = [](const brume::Picture& p, const std::string& text) {
+        for (const std::string& line : p.header)
+            if (line.find(text) != std::string::npos) return true;
+        return false;
+    };
+    EXPECT_TRUE(has(f1, "VIEW= -vtv -vp 0 -2 1 -vd 0 1 0 -vu 0 0 1 -vh 45 "));
+    EXPECT_TRUE(has(f3, "VIEW= -vtv -vp 0 -3 1 -vd 0 1 0 -vu 0 0 1 -vh 30 "));  // -vd and -vh carried on
+    EXPECT_TRUE(has(f3, "FRAME=3"));
+    EXPECT_TRUE(has(f3, "SCENETIME= 2.5"));
+    EXPECT_FALSE(fs::exists(dir() / "f4.hdr"));
+}
+
+// Without -o, the frames of a sequence follow one another on the standard output, as Radiance's.
+TEST_F(RpictCli, SequenceFramesAreConcatenatedOnTheOutput) {
+    Output r = rpict("-x 8 -y 8 -S 1 s.rad", "VIEW= -vp 0 -2 1\nVIEW= -vp 0 -3 1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    size_t second = r.out.find("#?RADIANCE", 1);
+    ASSERT_NE(second, std::string::npos);
+    EXPECT_EQ(picture(r.out.substr(0, second)).width, 8);
+    EXPECT_EQ(picture(r.out.substr(second)).width, 8);
+}
+
+// A camera path at 4 frames a second over 1 s: 5 frames, each with its scene time.
+TEST_F(RpictCli, CameraPathGivesTimedFrames) {
+    std::ofstream(dir() / "path.txt") << "0 0 -3 1 0 1 0\n1 0 -2 1 0 1 0\n";
+    Output r = rpict("-x 8 -y 8 -path path.txt -fps 4 -o walk%02d.hdr s.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (int i = 1; i <= 5; ++i) EXPECT_TRUE(fs::exists(dir() / ("walk0" + std::to_string(i) + ".hdr"))) << i;
+    EXPECT_FALSE(fs::exists(dir() / "walk06.hdr"));
+    std::string third = brume_test::slurp(dir() / "walk03.hdr");
+    EXPECT_NE(third.find("SCENETIME= 0.5\n"), std::string::npos);
+    EXPECT_NE(third.find("VIEW= -vtv -vp 0 -2.5 1 "), std::string::npos);
+}
+
+// -z writes one float per pixel: the distance to what the pixel sees.
+TEST_F(RpictCli, DepthFileHoldsAFloatPerPixel) {
+    Output r = rpict("-x 8 -y 8 -vp 0 0 1 -vd 0 0 -1 -vu 0 1 0 -vh 10 -vv 10 -z d.z -o p.hdr s.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string z = brume_test::slurp(dir() / "d.z");
+    ASSERT_EQ(z.size(), 64 * sizeof(float));
+    float centre;
+    std::memcpy(&centre, z.data() + (4 * 8 + 4) * sizeof(float), sizeof centre);
+    EXPECT_NEAR(centre, 1.0, 0.01);
+}
+
+TEST_F(RpictCli, ErrorsAreClearAndLeaveNoPicture) {
+    Output r = rpict("-vh 200 s.rad");
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.err, "rpict: illegal horizontal view size\n");
+    EXPECT_TRUE(r.out.empty());
+    std::ofstream(dir() / "old.hdr") << "keep";
+    r = rpict("-x 8 -y 8 -o old.hdr s.rad");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("rpict: cannot open output file \"old.hdr\""), std::string::npos) << r.err;
+    EXPECT_EQ(brume_test::slurp(dir() / "old.hdr"), "keep");
+    r = rpict("-x 8 -y 8 -o new.hdr missing.rad");
+    EXPECT_NE(r.status, 0);
+    EXPECT_FALSE(fs::exists(dir() / "new.hdr"));
+    r = rpict("-x 8 -y 8 -o f%d.hdr s.rad");
+    EXPECT_NE(r.err.find("no sequence"), std::string::npos) << r.err;
+    r = rpict("-pm 1 s.rad");
+    EXPECT_NE(r.err.find("motion blur"), std::string::npos) << r.err;
+    r = rpict("s.rad -x 8");
+    EXPECT_NE(r.status, 0);
+}
+
+// Radiance's rpict defaults (-defaults), where they differ from rtrace's.
+TEST_F(RpictCli, DefaultsAreRadiancesRpictDefaults) {
+    Output r = rpict("-defaults");
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* line : {"-x 512", "-y 512", "-pj 0.670000", "-ps 4", "-pt 0.050000", "-dt 0.050000",
+                             "-dc 0.500000", "-ds 0.250000", "-dr 1", "-st 0.150000", "-aa 0.200000", "-ar 64",
+                             "-ad 512", "-as 128", "-lr 7", "-u-", "-vtv"})
+        EXPECT_NE(r.out.find(std::string("\n") + line), std::string::npos) << line;
+}
