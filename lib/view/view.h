@@ -55,6 +55,11 @@ struct View {
     // for an invalid view.
     std::optional<ViewRay> ray(double x, double y) const;
 
+    // The height over the width of the view's image (Radiance's viewaspect): tan(vv/2)/tan(vh/2) for a
+    // perspective view, vv/vh for a parallel or angular one, the ratio of the image-plane extents for the
+    // others. Throws Error with problem()'s message for an invalid view.
+    double aspect() const;
+
     // Radiance's full option string, as in a VIEW= header line: "-vtv -vp 0 0 0 -vd 0 1 0 ...", no leading
     // space.
     std::string options() const;
@@ -72,7 +77,8 @@ size_t parseViewOption(View& view, std::span<const std::string> args);
 int parseViewString(View& view, std::string_view text);
 
 // Whether a header or view-file line holds a view: it starts with VIEW= or a program name that writes one
-// (rpict, rvu, rpiece, rxpiece, pinterp, rview, after any directory), as Radiance's isview decides.
+// (rpict, rvu, rpiece, rxpiece, pinterp, rview, or the running program, after any directory), as
+// Radiance's isview decides.
 bool isViewLine(std::string_view line);
 
 }  // namespace brume
