@@ -9,8 +9,8 @@
 #include <fstream>
 #include <istream>
 #include <ostream>
-#include <sstream>
 
+#include "io/resolution.h"
 #include "util/error.h"
 
 namespace brume {
@@ -92,32 +92,10 @@ void readScanline(std::istream& in, const std::string& name, std::vector<unsigne
     }
 }
 
-// The resolution line: two of "±Y n" / "±X n"; the first is the slow axis.
-struct ScanOrder {
-    bool transposed = false;  // scanlines are columns
-    bool flipX = false, flipY = false;  // x runs right to left / first scanline is the bottom
-    int width = 0, height = 0;
-};
-
-ScanOrder readResolution(std::istream& in, const std::string& name) {
+Resolution readResolution(std::istream& in, const std::string& name) {
     std::string line;
     if (!std::getline(in, line)) bad(name, "missing resolution line");
-    std::istringstream s(line);
-    std::string a, b;
-    long na = 0, nb = 0;
-    if (!(s >> a >> na >> b >> nb) || a.size() != 2 || b.size() != 2 || na <= 0 || nb <= 0 || na > 1 << 20 ||
-        nb > 1 << 20 || a[1] == b[1] || (a[1] != 'X' && a[1] != 'Y') || (b[1] != 'X' && b[1] != 'Y') ||
-        (a[0] != '+' && a[0] != '-') || (b[0] != '+' && b[0] != '-'))
-        bad(name, "bad resolution line \"" + line + "\"");
-    ScanOrder o;
-    o.transposed = a[1] == 'X';
-    const std::string& x = o.transposed ? a : b;
-    const std::string& y = o.transposed ? b : a;
-    o.width = int(o.transposed ? na : nb);
-    o.height = int(o.transposed ? nb : na);
-    o.flipX = x[0] == '-';
-    o.flipY = y[0] == '+';
-    return o;
+    return parseResolution(line, name);
 }
 
 void readHeader(std::istream& in, const std::string& name, Picture& p) {
@@ -169,11 +147,11 @@ Picture readOpenExr(const std::string& path) {
 Picture readRadiancePicture(std::istream& in, const std::string& name) {
     Picture p;
     readHeader(in, name, p);
-    ScanOrder o = readResolution(in, name);
+    Resolution o = readResolution(in, name);
     if (double(o.width) * o.height > kMaxPixels) bad(name, "picture too large");
     // The scanlines first, in a buffer that grows as they arrive: a resolution line promising more than the
     // file holds costs no more memory than the file.
-    int lines = o.transposed ? o.width : o.height, length = o.transposed ? o.height : o.width;
+    int lines = o.scanlines(), length = o.scanlineLength();
     std::vector<unsigned char> raw, line;
     for (int s = 0; s < lines; ++s) {
         readScanline(in, name, line, length);
@@ -184,9 +162,7 @@ Picture readRadiancePicture(std::istream& in, const std::string& name) {
     p.pixels.resize(size_t(p.width) * p.height * 3);
     for (int s = 0; s < lines; ++s)
         for (int k = 0; k < length; ++k) {
-            int x = o.transposed ? s : k, y = o.transposed ? k : s;
-            if (o.flipX) x = p.width - 1 - x;
-            if (o.flipY) y = p.height - 1 - y;
+            auto [x, y] = o.pixel(s, k);
             decode(&raw[(size_t(s) * length + k) * 4], p.at(x, y));
         }
     return p;

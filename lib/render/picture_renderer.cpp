@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "render/progress.h"
+#include "view/pixel_aspect.h"
 
 namespace brume {
 

@@ -20,13 +20,23 @@ struct Frame {
     dvec3 toWorld(const dvec3& v) const { return v.x * s + v.y * t + v.z * n; }
 };
 
-// Cosine-weighted direction about +z (Malley's method over Shirley's concentric disk); pdf = cosθ/π.
-inline dvec3 cosineHemisphere(double u, double v) {
+// Uniform point (x, y) on the unit disc, Shirley and Chiu's concentric map (1997): area-preserving, and
+// strata of the square stay compact on the disc.
+inline void concentricDisk(double u, double v, double& x, double& y) {
     double a = 2 * u - 1, b = 2 * v - 1, r, phi;
-    if (a == 0 && b == 0) return {0, 0, 1};
+    if (a == 0 && b == 0) {
+        x = y = 0;
+        return;
+    }
     if (a * a > b * b) r = a, phi = std::numbers::pi / 4 * (b / a);
     else r = b, phi = std::numbers::pi / 2 - std::numbers::pi / 4 * (a / b);
-    double x = r * std::cos(phi), y = r * std::sin(phi);
+    x = r * std::cos(phi), y = r * std::sin(phi);
+}
+
+// Cosine-weighted direction about +z (Malley's method over the concentric disk); pdf = cosθ/π.
+inline dvec3 cosineHemisphere(double u, double v) {
+    double x, y;
+    concentricDisk(u, v, x, y);
     return {x, y, std::sqrt(std::max(0.0, 1 - x * x - y * y))};
 }
 

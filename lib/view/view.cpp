@@ -112,6 +112,12 @@ void View::validate() const {
     if (std::string p = problem(); !p.empty()) throw Error(p);
 }
 
+double View::aspect() const {
+    Frame f;
+    if (std::string p = makeFrame(*this, f); !p.empty()) throw Error(p);
+    return std::sqrt(f.vn2 / f.hn2);
+}
+
 std::optional<ViewRay> View::ray(double x, double y) const {
     Frame f;
     if (!makeFrame(*this, f).empty()) return std::nullopt;
@@ -174,17 +180,6 @@ std::optional<ViewRay> View::ray(double x, double y) const {
     r.org = vp + vo * r.dir;
     r.tmax = aft;
     return r;
-}
-
-double View::aspect() const {
-    Frame f;
-    return makeFrame(*this, f).empty() ? std::sqrt(f.vn2 / f.hn2) : 0;
-}
-
-void normalizeResolution(double viewAspect, double& pixelAspect, int& xres, int& yres) {
-    if (pixelAspect <= kTiny) pixelAspect = viewAspect * xres / yres;
-    else if (viewAspect * xres > pixelAspect * yres) xres = int(yres / viewAspect * pixelAspect + .5);
-    else yres = int(xres * viewAspect / pixelAspect + .5);
 }
 
 std::string View::options() const {
@@ -275,6 +270,8 @@ bool isViewLine(std::string_view line) {
     while (end < line.size() && !std::isspace((unsigned char)line[end])) end++;
     std::string_view word = line.substr(0, end);
     if (size_t slash = word.rfind('/'); slash != std::string_view::npos) word = word.substr(slash + 1);
+    const std::string& self = programName();
+    if (!self.empty() && word.substr(0, self.size()) == self) return true;
     for (std::string_view name : {"VIEW=", "rpict", "rvu", "rpiece", "rxpiece", "pinterp", "rview"})
         if (word.substr(0, name.size()) == name) return true;
     return false;

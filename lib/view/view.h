@@ -55,7 +55,9 @@ struct View {
     // for an invalid view.
     std::optional<ViewRay> ray(double x, double y) const;
 
-    // Height over width of the view's image (Radiance's viewaspect); 0 for an invalid view.
+    // The height over the width of the view's image (Radiance's viewaspect): tan(vv/2)/tan(vh/2) for a
+    // perspective view, vv/vh for a parallel or angular one, the ratio of the image-plane extents for the
+    // others. Throws Error with problem()'s message for an invalid view.
     double aspect() const;
 
     // Radiance's full option string, as in a VIEW= header line: "-vtv -vp 0 0 0 -vd 0 1 0 ...", no leading
@@ -64,10 +66,6 @@ struct View {
 
     bool operator==(const View&) const = default;
 };
-
-// Radiance's normaspect: with pixelAspect 0, keeps the resolution and sets the pixel aspect (height over
-// width of a pixel) that fits the view; otherwise reduces xres or yres so that pixels of that aspect fit it.
-void normalizeResolution(double viewAspect, double& pixelAspect, int& xres, int& yres);
 
 // Reads one view option at args[0] into `view` and returns how many arguments it used (the option and its
 // values); 0 when args[0] is not a view option (-vf, which names a file, is left to the caller). Throws
@@ -79,7 +77,8 @@ size_t parseViewOption(View& view, std::span<const std::string> args);
 int parseViewString(View& view, std::string_view text);
 
 // Whether a header or view-file line holds a view: it starts with VIEW= or a program name that writes one
-// (rpict, rvu, rpiece, rxpiece, pinterp, rview, after any directory), as Radiance's isview decides.
+// (rpict, rvu, rpiece, rxpiece, pinterp, rview, or the running program, after any directory), as
+// Radiance's isview decides.
 bool isViewLine(std::string_view line);
 
 }  // namespace brume

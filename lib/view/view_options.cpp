@@ -1,46 +1,46 @@
 #include "view/view_options.h"
 
-#include <cstdio>
-
 #include "util/error.h"
+#include "view/view_file.h"
 
 namespace brume {
 
 namespace {
 
-const auto& number = formatReal;
-
-std::string vector(const dvec3& v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
-
-// An option with `count` numbers, read by parseViewOption from the option and its words.
-void addNumbers(OptionTable& t, View& view, const std::string& name, int count, const std::string& help,
-                std::function<std::string()> current) {
-    t.add(name, count, help, [&view, name](const std::vector<std::string>& a) {
-        std::vector<std::string> words{name};
-        words.insert(words.end(), a.begin(), a.end());
-        parseViewOption(view, words);
-    }, std::move(current));
-}
+std::string vector(const dvec3& v) { return formatReal(v.x) + " " + formatReal(v.y) + " " + formatReal(v.z); }
 
 }  // namespace
 
-void addViewOptions(OptionTable& t, View& view) {
-    t.addAttached("-vt", "view type: v (perspective) l (parallel) h a s (fisheyes) c (cylindrical)",
-                  [&view](const std::string& v) {
-                      if (v.size() != 1) throw Error("bad view type '-vt" + v + "'");
-                      view.type = v[0];
-                  },
-                  [&view] { return std::string(1, view.type); });
-    addNumbers(t, view, "-vp", 3, "view point", [&view] { return vector(view.vp); });
-    addNumbers(t, view, "-vd", 3, "view direction (its length: the focal distance for -pd)",
-               [&view] { return vector(view.vd); });
-    addNumbers(t, view, "-vu", 3, "view up", [&view] { return vector(view.vu); });
-    addNumbers(t, view, "-vh", 1, "view horizontal size", [&view] { return number(view.vh); });
-    addNumbers(t, view, "-vv", 1, "view vertical size", [&view] { return number(view.vv); });
-    addNumbers(t, view, "-vo", 1, "view fore clipping plane", [&view] { return number(view.vo); });
-    addNumbers(t, view, "-va", 1, "view aft clipping plane", [&view] { return number(view.va); });
-    addNumbers(t, view, "-vs", 1, "view shift", [&view] { return number(view.vs); });
-    addNumbers(t, view, "-vl", 1, "view lift", [&view] { return number(view.vl); });
+void addViewOptions(OptionTable& table, View& view) {
+    table.addAttached("-vt", "view type: v (perspective), l (parallel), h a s (fisheyes), c (panorama)",
+                      [&view](const std::string& letter) {
+                          if (letter.size() != 1) throw Error("bad view type '-vt" + letter + "'");
+                          view.type = letter[0];
+                      },
+                      [&view] { return std::string(1, view.type); });
+    struct Entry {
+        const char* name;
+        int count;
+        const char* help;
+        std::function<std::string()> current;
+    };
+    auto real = [](const double& v) { return [&v] { return formatReal(v); }; };
+    for (Entry e : {Entry{"-vp", 3, "view point", [&view] { return vector(view.vp); }},
+                    {"-vd", 3, "view direction (its length: focal distance)", [&view] { return vector(view.vd); }},
+                    {"-vu", 3, "view up", [&view] { return vector(view.vu); }},
+                    {"-vh", 1, "horizontal view size", real(view.vh)}, {"-vv", 1, "vertical view size", real(view.vv)},
+                    {"-vo", 1, "fore clipping distance", real(view.vo)}, {"-va", 1, "aft clipping distance", real(view.va)},
+                    {"-vs", 1, "view shift", real(view.vs)}, {"-vl", 1, "view lift", real(view.vl)}}) {
+        std::string name = e.name;
+        table.add(name, e.count, e.help, [&view, name](const std::vector<std::string>& values) {
+            std::vector<std::string> words{name};
+            words.insert(words.end(), values.begin(), values.end());
+            parseViewOption(view, words);
+        }, e.current);
+    }
+    table.add("-vf", 1, "view file or picture", [&view](const std::vector<std::string>& a) {
+        if (!readViewFile(a[0], view)) throw Error(a[0] + ": no view in file");
+    });
 }
 
 }  // namespace brume
