@@ -183,28 +183,34 @@ Picture readPicture(const std::string& path) {
 
 namespace {
 
-// The new run-length encoding of one component: runs of ≥ 4 equal bytes, literals in between.
+// The length of the run of equal bytes at x (stride 4: one component of RGBE pixels), at most 127.
+int runAt(const unsigned char* c, int x, int n) {
+    int run = 1;
+    while (x + run < n && run < 127 && c[4 * (x + run)] == c[4 * x]) ++run;
+    return run;
+}
+
+// The new run-length encoding of one component, as Radiance 6.1's fwritecolrs lays it out: runs of ≥ 4
+// equal bytes, literals of ≤ 128 between them, except that 2 or 3 equal bytes before a run are a run too.
 void writeComponent(std::ostream& out, const unsigned char* c, int n) {
-    int x = 0;
-    while (x < n) {
-        int run = 1;
-        while (x + run < n && run < 127 && c[4 * (x + run)] == c[4 * x]) ++run;
-        if (run >= kMinRunLength) {
-            out.put(char(128 + run));
-            out.put(char(c[4 * x]));
-            x += run;
-            continue;
+    for (int x = 0; x < n;) {
+        int start = x, run = 0;
+        while (x < n && (run = runAt(c, x, n)) < kMinRunLength) x += run;
+        int gap = x - start;
+        if (gap >= 2 && gap < kMinRunLength && runAt(c, start, n) == gap) {
+            out.put(char(128 + gap));
+            out.put(char(c[4 * start]));
+        } else {
+            for (int k = start; k < x; k += 128) {
+                int count = std::min(128, x - k);
+                out.put(char(count));
+                for (int i = k; i < k + count; ++i) out.put(char(c[4 * i]));
+            }
         }
-        int start = x, count = 0;
-        while (x < n && count < 128) {
-            int ahead = 1;
-            while (x + ahead < n && ahead < kMinRunLength && c[4 * (x + ahead)] == c[4 * x]) ++ahead;
-            if (ahead >= kMinRunLength) break;
-            ++x;
-            ++count;
-        }
-        out.put(char(count));
-        for (int k = start; k < start + count; ++k) out.put(char(c[4 * k]));
+        if (x == n) break;
+        out.put(char(128 + run));
+        out.put(char(c[4 * x]));
+        x += run;
     }
 }
 

@@ -153,3 +153,17 @@ TEST(Picture, XyzPicturesSayXyzeAndHaveNoPrimaries) {
     EXPECT_EQ(s.str().substr(0, s.str().find("\n\n")), "#?RADIANCE\nrpict -x 3\nFORMAT=32-bit_rle_xyze");
     EXPECT_TRUE(roundTrip(p).xyz);
 }
+
+// Radiance's encoder writes two or three equal bytes before a run as a short run rather than as literals.
+TEST(Picture, ShortRunsBeforeARunAreEncodedAsRadianceEncodesThem) {
+    Picture p;
+    p.width = 17;
+    p.height = 1;
+    p.pixels.assign(17 * 3, 0.5f);                                 // exponent byte 128
+    std::fill(p.pixels.begin(), p.pixels.begin() + 6, 0.25f);  // the first two pixels: exponent byte 127
+    std::stringstream s;
+    writeRadiancePicture(s, p);
+    std::string scanline = s.str().substr(s.str().find("+X       17\n") + 12);
+    EXPECT_EQ(scanline, (std::string{2, 2, 0, 17, char(145), char(128), char(145), char(128), char(145), char(128),
+                                     char(130), char(127), char(143), char(128)}));
+}
