@@ -72,9 +72,9 @@ OptionTable makeTable(Options& o) {
     t.add("-path", 1, "camera path: lines of time px py pz dx dy dz [ux uy uz]",
           [&o](const auto& a) { o.cameraPath = a[0]; });
     addReal(t, "-fps", o.framesPerSecond, "frames per second along -path (0: a frame per key)");
-    t.addAttached("-ef", "OpenEXR pixels: h (half) or f (float)", [&o](const std::string& v) {
-        if (v != "h" && v != "f") throw Error("bad OpenEXR pixel type '-ef" + v + "' (h or f)");
-        o.exrFloat = v == "f";
+    t.add("-ef", 1, "OpenEXR pixels: h (half) or f (float)", [&o](const auto& a) {
+        if (a[0] != "h" && a[0] != "f") throw Error("bad OpenEXR pixel type '" + a[0] + "' for -ef (h or f)");
+        o.exrFloat = a[0] == "f";
     }, [&o] { return std::string(o.exrFloat ? "f" : "h"); });
     t.addAttached("-p", "output colour space: RGB or XYZ", [](const std::string& v) {
         if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
@@ -122,6 +122,7 @@ std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::st
     std::istringstream dates(softwareAndDates());
     for (std::string line; std::getline(dates, line);) h.push_back(line);
     h.push_back("VIEW= " + f.view.options());
+    h.push_back("PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333");  // Radiance's RGB
     char buf[64];
     if (p.pixelAspect != 1) {
         std::snprintf(buf, sizeof buf, "PIXASPECT=%f", p.pixelAspect);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <iomanip>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -158,4 +159,26 @@ TEST_F(RpictCli, DefaultsAreRadiancesRpictDefaults) {
                              "-dc 0.500000", "-ds 0.250000", "-dr 1", "-st 0.150000", "-aa 0.200000", "-ar 64",
                              "-ad 512", "-as 128", "-lr 7", "-u-", "-vtv"})
         EXPECT_NE(r.out.find(std::string("\n") + line), std::string::npos) << line;
+}
+
+// The promise of the man page, end to end: with -pj 0 -ps 1 each pixel of a float OpenEXR picture is, bit for
+// bit, rtrace's value for the ray vwrays gives that pixel (same options, -u-); the view is in the file.
+TEST_F(RpictCli, PixelsEqualVwraysThroughRtrace) {
+    std::string bin = BRUME_BIN_DIR, view = std::string(" -x 11 -y 7 -pa 0 ") + kView;
+    Output r = rpict("-pj 0 -ps 1 -ab 1 -ad 16 -ef f -o p.exr" + view + " s.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    Output rays = brume_test::runCaptured("cd " + dir().string() + " && " + bin + "/vwrays -fd" + view + " | " + bin +
+                                              "/rtrace -h -fdf -ab 1 -ad 16 -aa .2 -ar 64 -as 128 -lr 7 -dt .05 -dc .5 "
+                                              "-ds .25 -dr 1 -st .15 -u- s.rad",
+                                          dir());
+    ASSERT_EQ(rays.status, 0) << rays.err;
+    brume::Picture p = brume::readPicture((dir() / "p.exr").string());
+    ASSERT_EQ(rays.out.size(), 11 * 7 * 3 * sizeof(float));
+    std::vector<float> values(11 * 7 * 3);
+    std::memcpy(values.data(), rays.out.data(), rays.out.size());
+    ASSERT_EQ(p.pixels.size(), values.size());
+    for (size_t i = 0; i < values.size(); ++i) ASSERT_EQ(p.pixels[i], values[i]) << std::setprecision(9) << "pixel " << i / 3 << " of 77: " << p.pixels[i] << " vs " << values[i];
+    bool hasView = false;
+    for (const std::string& line : p.header) hasView |= line.rfind("VIEW= -vtv -vp 0 -2 1 ", 0) == 0;
+    EXPECT_TRUE(hasView);
 }

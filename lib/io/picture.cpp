@@ -1,24 +1,26 @@
 #include "io/picture.h"
 
-#include <OpenEXR/ImfRgbaFile.h>
-#include <OpenEXR/ImfArray.h>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <istream>
 #include <ostream>
 
+#include "io/openexr_picture.h"
 #include "io/resolution.h"
 #include "util/error.h"
+#include "util/header.h"
 
 namespace brume {
 
 namespace {
 
 constexpr int kMinRunLength = 4;
-constexpr double kMaxPixels = double(1 << 28);  // 256 M pixels, 3 GB of floats: beyond any real picture
+// Radiance 6.1 writes shorter and longer scanlines flat (color.c MINELEN, MAXELEN); its reader tells the
+// encodings apart by the (2, 2, length) mark alone, whatever the length.
+constexpr int kMinEncodedLength = 17, kMaxEncodedLength = 0x7fff;
 
 [[noreturn]] void bad(const std::string& name, const std::string& what) {
     throw Error(name + ": " + what);
@@ -57,7 +59,7 @@ void readScanline(std::istream& in, const std::string& name, std::vector<unsigne
     line.assign(size_t(n) * 4, 0);
     unsigned char first[4];
     for (auto& b : first) b = (unsigned char)byte(in, name);
-    if (n >= 8 && n < 0x8000 && first[0] == 2 && first[1] == 2 && !(first[2] & 0x80)) {
+    if (first[0] == 2 && first[1] == 2 && !(first[2] & 0x80)) {
         if ((first[2] << 8 | first[3]) != n) bad(name, "scanline length mismatch");
         for (int component = 0; component < 4; ++component) {
             for (int x = 0; x < n;) {
@@ -102,44 +104,19 @@ void readHeader(std::istream& in, const std::string& name, Picture& p) {
     std::string line;
     if (!std::getline(in, line) || line != "#?RADIANCE") bad(name, "not a Radiance picture");
     while (std::getline(in, line) && !line.empty()) {
-        if (line.rfind("FORMAT=", 0) == 0) {
+        if (isHeaderVariable(line, "FORMAT=")) {
             std::string f = line.substr(7);
             while (!f.empty() && std::isspace((unsigned char)f.back())) f.pop_back();
             if (f != "32-bit_rle_rgbe" && f != "32-bit_rle_xyze") bad(name, "unsupported picture format " + f);
             p.xyz = f == "32-bit_rle_xyze";
             continue;
         }
-        if (line.rfind("EXPOSURE=", 0) == 0) p.exposure *= std::atof(line.c_str() + 9);
-        if (line.rfind("PIXASPECT=", 0) == 0) p.pixelAspect *= std::atof(line.c_str() + 10);
         p.header.push_back(line);
     }
+    p.exposure = headerProduct(p.header, "EXPOSURE=");
+    p.pixelAspect = headerProduct(p.header, "PIXASPECT=");
     if (!in) bad(name, "truncated header");  // without FORMAT=, RGBE, as Radiance assumes
     if (!(p.pixelAspect > 0) || !(p.exposure > 0)) bad(name, "bad EXPOSURE= or PIXASPECT=");
-}
-
-Picture readOpenExr(const std::string& path) {
-    try {
-        Imf::RgbaInputFile file(path.c_str());
-        Imath::Box2i dw = file.dataWindow();
-        Picture p;
-        p.width = dw.max.x - dw.min.x + 1;
-        p.height = dw.max.y - dw.min.y + 1;
-        p.pixelAspect = 1 / file.pixelAspectRatio();
-        Imf::Array2D<Imf::Rgba> rgba(p.height, p.width);
-        file.setFrameBuffer(&rgba[0][0] - dw.min.x - dw.min.y * p.width, 1, p.width);
-        file.readPixels(dw.min.y, dw.max.y);
-        p.pixels.resize(size_t(p.width) * p.height * 3);
-        for (int y = 0; y < p.height; ++y)
-            for (int x = 0; x < p.width; ++x) {
-                float* o = p.at(x, y);
-                o[0] = rgba[y][x].r;
-                o[1] = rgba[y][x].g;
-                o[2] = rgba[y][x].b;
-            }
-        return p;
-    } catch (const std::exception& e) {
-        bad(path, e.what());
-    }
 }
 
 }  // namespace
@@ -148,7 +125,7 @@ Picture readRadiancePicture(std::istream& in, const std::string& name) {
     Picture p;
     readHeader(in, name, p);
     Resolution o = readResolution(in, name);
-    if (double(o.width) * o.height > kMaxPixels) bad(name, "picture too large");
+    if (double(o.width) * o.height > kMaxPicturePixels) bad(name, "picture too large");
     // The scanlines first, in a buffer that grows as they arrive: a resolution line promising more than the
     // file holds costs no more memory than the file.
     int lines = o.scanlines(), length = o.scanlineLength();
@@ -174,7 +151,7 @@ Picture readPicture(const std::string& path) {
     char magic[4] = {};
     in.read(magic, 4);
     if (in.gcount() == 4 && (unsigned char)magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01)
-        return readOpenExr(path);
+        return readOpenExrPicture(path);
     in.clear();
     in.seekg(0);
     return readRadiancePicture(in, path);
@@ -182,28 +159,34 @@ Picture readPicture(const std::string& path) {
 
 namespace {
 
-// The new run-length encoding of one component: runs of ≥ 4 equal bytes, literals in between.
+// The length of the run of equal bytes at x (stride 4: one component of RGBE pixels), at most 127.
+int runAt(const unsigned char* c, int x, int n) {
+    int run = 1;
+    while (x + run < n && run < 127 && c[4 * (x + run)] == c[4 * x]) ++run;
+    return run;
+}
+
+// The new run-length encoding of one component, as Radiance 6.1's fwritecolrs lays it out: runs of ≥ 4
+// equal bytes, literals of ≤ 128 between them, except that 2 or 3 equal bytes before a run are a run too.
 void writeComponent(std::ostream& out, const unsigned char* c, int n) {
-    int x = 0;
-    while (x < n) {
-        int run = 1;
-        while (x + run < n && run < 127 && c[4 * (x + run)] == c[4 * x]) ++run;
-        if (run >= kMinRunLength) {
-            out.put(char(128 + run));
-            out.put(char(c[4 * x]));
-            x += run;
-            continue;
+    for (int x = 0; x < n;) {
+        int start = x, run = 0;
+        while (x < n && (run = runAt(c, x, n)) < kMinRunLength) x += run;
+        int gap = x - start;
+        if (gap >= 2 && gap < kMinRunLength && runAt(c, start, n) == gap) {
+            out.put(char(128 + gap));
+            out.put(char(c[4 * start]));
+        } else {
+            for (int k = start; k < x; k += 128) {
+                int count = std::min(128, x - k);
+                out.put(char(count));
+                for (int i = k; i < k + count; ++i) out.put(char(c[4 * i]));
+            }
         }
-        int start = x, count = 0;
-        while (x < n && count < 128) {
-            int ahead = 1;
-            while (x + ahead < n && ahead < kMinRunLength && c[4 * (x + ahead)] == c[4 * x]) ++ahead;
-            if (ahead >= kMinRunLength) break;
-            ++x;
-            ++count;
-        }
-        out.put(char(count));
-        for (int k = start; k < start + count; ++k) out.put(char(c[4 * k]));
+        if (x == n) break;
+        out.put(char(128 + run));
+        out.put(char(c[4 * x]));
+        x += run;
     }
 }
 
@@ -211,13 +194,17 @@ void writeComponent(std::ostream& out, const unsigned char* c, int n) {
 
 void writeRadiancePicture(std::ostream& out, const Picture& p) {
     out << "#?RADIANCE\n";
-    for (const std::string& line : p.header) out << line << '\n';
+    for (const std::string& line : p.header)
+        // Primaries describe RGB; Radiance writes none for XYZE. FORMAT= is the picture's own.
+        if (!isHeaderVariable(line, "FORMAT=") && !(p.xyz && isHeaderVariable(line, "PRIMARIES="))) out << line << '\n';
     out << "FORMAT=" << (p.xyz ? "32-bit_rle_xyze" : "32-bit_rle_rgbe") << "\n\n";
-    out << "-Y " << p.height << " +X " << p.width << '\n';
+    char resolution[64];  // as Radiance's resolu2str, so that Brume's pictures match Radiance's byte for byte
+    std::snprintf(resolution, sizeof resolution, "-Y %8d +X %8d\n", p.height, p.width);
+    out << resolution;
     std::vector<unsigned char> line(size_t(p.width) * 4);
     for (int y = 0; y < p.height; ++y) {
         for (int x = 0; x < p.width; ++x) encode(p.at(x, y), &line[size_t(x) * 4]);
-        if (p.width < 8 || p.width >= 0x8000) {  // too short or long to run-length encode: flat
+        if (p.width < kMinEncodedLength || p.width > kMaxEncodedLength) {
             out.write(reinterpret_cast<const char*>(line.data()), std::streamsize(line.size()));
             continue;
         }

@@ -7,13 +7,19 @@
 
 namespace brume {
 
+// 256 M pixels, 3 GB of floats: beyond any real picture; the readers refuse larger ones before allocating.
+inline constexpr double kMaxPicturePixels = double(1 << 28);
+
 struct Picture {
     int width = 0, height = 0;
     std::vector<float> pixels;  // width × height × 3, rows from the top, each left to right
     bool xyz = false;           // XYZE rather than RGBE
-    double pixelAspect = 1;     // PIXASPECT= (height/width of a pixel), product of all such lines
-    double exposure = 1;        // EXPOSURE=, product of all such lines (pixels are as stored, not divided)
-    std::vector<std::string> header;  // the information header's lines, without newlines
+    // What the readers found in the header's PIXASPECT= (height/width of a pixel) and EXPOSURE= lines (pixels
+    // are as stored, not divided). The writers go by the header lines alone.
+    double pixelAspect = 1;
+    double exposure = 1;
+    // The information header's lines, without newlines and without FORMAT= (the writers add it from `xyz`)
+    std::vector<std::string> header;
 
     float* at(int x, int y) { return &pixels[3 * (size_t(y) * width + x)]; }
     const float* at(int x, int y) const { return &pixels[3 * (size_t(y) * width + x)]; }
@@ -24,8 +30,9 @@ struct Picture {
 Picture readPicture(const std::string& path);
 Picture readRadiancePicture(std::istream& in, const std::string& name);
 
-// Writes `picture` as a run-length encoded Radiance picture: "#?RADIANCE", the header lines, FORMAT=,
-// the blank line, "-Y height +X width" and the scanlines.
+// Writes `picture` as a run-length encoded Radiance picture: "#?RADIANCE", the header lines (without
+// PRIMARIES= when XYZE), FORMAT=, the blank line, "-Y height +X width" and the scanlines, laid out as
+// Radiance 6.1 lays them out.
 void writeRadiancePicture(std::ostream& out, const Picture& picture);
 
 }  // namespace brume

@@ -117,3 +117,53 @@ TEST(Picture, OpenExrPicturesAreReadAsLinearRgb) {
     EXPECT_FLOAT_EQ(p.at(0, 1)[1], 0.25f);
     EXPECT_FLOAT_EQ(p.at(0, 0)[2], 2);
 }
+
+// Radiance 6.1 writes scanlines shorter than 17 or longer than 32767 pixels flat, the others run-length
+// encoded after a (2, 2, length) mark; its resolution line pads the numbers to eight places.
+TEST(Picture, ScanlinesAreLaidOutAsRadianceLaysThemOut) {
+    for (int w : {16, 17}) {
+        std::stringstream s;
+        writeRadiancePicture(s, gradient(w, 2));
+        std::string text = s.str(), resolution = "-Y        2 +X       " + std::to_string(w) + "\n";
+        size_t data = text.find(resolution);
+        ASSERT_NE(data, std::string::npos) << text;
+        data += resolution.size();
+        if (w == 16) EXPECT_EQ(text.size() - data, size_t(16 * 4 * 2));
+        else EXPECT_EQ(text.substr(data, 4), (std::string{2, 2, 0, 17}));
+    }
+}
+
+// As Radiance's reader does, the mark alone says a scanline is encoded, whatever its length.
+TEST(Picture, EncodedScanlinesAreReadWhateverTheirLength) {
+    std::string text = std::string("#?RADIANCE\n\n-Y 1 +X 3\n") + std::string{2, 2, 0, 3};
+    for (char component : {char(128), char(0), char(0), char(129)}) text += std::string{char(128 + 3), component};
+    std::istringstream in(text);
+    Picture p = readRadiancePicture(in, "test");
+    for (int x = 0; x < 3; ++x) EXPECT_FLOAT_EQ(p.at(x, 0)[0], 128.5f / 128);
+}
+
+// Primaries describe RGB: an XYZE picture says FORMAT=32-bit_rle_xyze and has none, as rpict's.
+TEST(Picture, XyzPicturesSayXyzeAndHaveNoPrimaries) {
+    Picture p = gradient(3, 2);
+    p.xyz = true;
+    p.header = {"rpict -x 3", "PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333",
+                "FORMAT=32-bit_rle_rgbe"};
+    std::stringstream s;
+    writeRadiancePicture(s, p);
+    EXPECT_EQ(s.str().substr(0, s.str().find("\n\n")), "#?RADIANCE\nrpict -x 3\nFORMAT=32-bit_rle_xyze");
+    EXPECT_TRUE(roundTrip(p).xyz);
+}
+
+// Radiance's encoder writes two or three equal bytes before a run as a short run rather than as literals.
+TEST(Picture, ShortRunsBeforeARunAreEncodedAsRadianceEncodesThem) {
+    Picture p;
+    p.width = 17;
+    p.height = 1;
+    p.pixels.assign(17 * 3, 0.5f);                                 // exponent byte 128
+    std::fill(p.pixels.begin(), p.pixels.begin() + 6, 0.25f);  // the first two pixels: exponent byte 127
+    std::stringstream s;
+    writeRadiancePicture(s, p);
+    std::string scanline = s.str().substr(s.str().find("+X       17\n") + 12);
+    EXPECT_EQ(scanline, (std::string{2, 2, 0, 17, char(145), char(128), char(145), char(128), char(145), char(128),
+                                     char(130), char(127), char(143), char(128)}));
+}

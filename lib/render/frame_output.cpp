@@ -3,17 +3,21 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 
+#include "io/openexr_picture.h"
 #include "util/error.h"
 
 namespace brume {
 
 namespace {
+
+constexpr float kHalfMax = 65504.f;  // the largest finite half float
 
 // The conversion's span [begin, end) in the pattern, or begin = npos when there is none.
 std::pair<size_t, size_t> conversion(const std::string& pattern) {
@@ -74,7 +78,10 @@ bool claimFile(const std::string& path) {
 
 void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat) {
     if (endsWith(path, ".exr")) {
-        throw Error("OpenEXR output (" + path + ") is not supported yet");
+        if (!exrFloat && std::any_of(picture.pixels.begin(), picture.pixels.end(), [](float v) { return v > kHalfMax; }))
+            warn(path + ": values above " + std::to_string(int(kHalfMax)) + " (a light source, the sun) clamped in half floats; -ef f keeps them");
+        writeOpenExrPicture(path, picture, exrFloat ? ExrPixels::float32 : ExrPixels::half);
+        return;
     }
     std::string temporary = path + ".tmp" + std::to_string(::getpid());
     {

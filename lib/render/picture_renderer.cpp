@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "render/progress.h"
+#include "view/aperture.h"
 #include "view/pixel_aspect.h"
 
 namespace brume {
@@ -56,16 +57,15 @@ private:
     void trace(int x, int row) {
         size_t i = at(x, row);
         uint64_t index = i;
-        double jx = 0.5, jy = 0.5;
-        if (s_.jitter > 0) {
-            Random random(integrator_.seedFor(index) ^ 0x6a09e667f3bcc909ULL, index);
-            jx += s_.jitter * (0.5 - random.uniform());
-            jy += s_.jitter * (0.5 - random.uniform());
-        }
+        Random random(integrator_.seedFor(index) ^ 0x6a09e667f3bcc909ULL, index);  // this pixel's jitter and lens
+        double jx = 0.5 + s_.jitter * (0.5 - random.uniform()), jy = 0.5 + s_.jitter * (0.5 - random.uniform());
         // The view's y runs up from the bottom edge; rows run down from the top.
         std::optional<ViewRay> ray = view_.ray((x + jx) / w_, (h_ - 1 - row + jy) / h_);
         traced_[i] = 1;
-        if (!ray) return;  // outside a fisheye's circle: black, as Radiance
+        if (ray && s_.aperture > 0 &&
+            !jitterAperture(view_, *ray, s_.aperture, random.uniform(), random.uniform(), random.uniform()))
+            ray.reset();
+        if (!ray) return;  // outside a fisheye's circle, or no lens ray: black, as Radiance
         RayRecord rec = s_.irradiance
                             ? integrator_.irradianceAtHit(ray->org, ray->dir, index)
                             : integrator_.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);

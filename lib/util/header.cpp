@@ -1,6 +1,7 @@
 #include "util/header.h"
 
 #include <cctype>
+#include <cstdlib>
 #include <ctime>
 
 namespace brume {
@@ -30,6 +31,15 @@ std::string softwareAndDates() {
     std::strftime(local, sizeof local, "%Y:%m:%d %H:%M:%S", std::localtime(&now));
     std::strftime(gmt, sizeof gmt, "%Y:%m:%d %H:%M:%S", std::gmtime(&now));
     return std::string("SOFTWARE= Brume ") + BRUME_VERSION + "\nCAPDATE= " + local + "\nGMT= " + gmt + "\n";
+}
+
+bool isHeaderVariable(std::string_view line, std::string_view name) { return line.substr(0, name.size()) == name; }
+
+double headerProduct(const std::vector<std::string>& lines, std::string_view name) {
+    double product = 1;
+    for (const std::string& line : lines)
+        if (isHeaderVariable(line, name)) product *= std::atof(line.c_str() + name.size());
+    return product;
 }
 
 }  // namespace brume

@@ -2,6 +2,7 @@
 // FORMAT=, ended by an empty line.
 #pragma once
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace brume {
@@ -13,5 +14,11 @@ std::string quotedWord(const std::string& word);
 std::string commandLine(const std::vector<std::string>& words);
 // "SOFTWARE= Brume x.y", "CAPDATE= ...", "GMT= ..." lines.
 std::string softwareAndDates();
+
+// Whether a header line sets the variable `name` (given with its '=', as "VIEW="), by Radiance's prefix rule.
+bool isHeaderVariable(std::string_view line, std::string_view name);
+// The product of the values of every line setting `name`: Radiance multiplies EXPOSURE= and PIXASPECT=
+// lines (pfilt after rpict adds one more); 1 without any.
+double headerProduct(const std::vector<std::string>& lines, std::string_view name);
 
 }  // namespace brume

@@ -1,0 +1,331 @@
+#include "io/openexr_picture.h"
+
+#include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfRgbaFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <Imath/half.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "util/error.h"
+#include "util/header.h"
+
+namespace brume {
+
+namespace {
+
+// Radiance's WHTEFFICACY (color.h): lumens per watt of its equal-energy white, luminance = 179 × Y.
+constexpr double kWhiteEfficacy = 179;
+constexpr float kHalfMax = HALF_MAX;
+const char* const kChannels[3] = {"R", "G", "B"};
+
+// Radiance's default primaries (color.h STDPRIMS, the "nominal CRT" ones with an equal-energy white).
+const Imf::Chromaticities kRadiancePrimaries({0.640f, 0.330f}, {0.290f, 0.600f}, {0.150f, 0.060f},
+                                             {1 / 3.0f, 1 / 3.0f});
+// OpenEXR's convention for CIE XYZ in R, G, B (OpenEXR Technical Introduction, "CIE XYZ Color").
+const Imf::Chromaticities kXyzPrimaries({1, 0}, {0, 1}, {0, 0}, {1 / 3.0f, 1 / 3.0f});
+
+// ---- Radiance header lines to attributes ----
+
+std::string trimmed(std::string_view s) {
+    size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t\r");
+    return b == std::string_view::npos ? std::string() : std::string(s.substr(b, e - b + 1));
+}
+
+std::string valueOf(const std::string& line, std::string_view name) {
+    return trimmed(std::string_view(line).substr(name.size()));
+}
+
+// A header variable is "NAME=value" with no blank in NAME; anything else is a command line.
+bool isCommandLine(const std::string& line) {
+    size_t equals = line.find('='), blank = line.find_first_of(" \t");
+    return equals == std::string::npos || equals == 0 || equals > blank;
+}
+
+std::optional<Imf::Chromaticities> primariesOf(const std::string& value) {
+    float v[8];
+    if (std::sscanf(value.c_str(), "%f %f %f %f %f %f %f %f", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6],
+                    &v[7]) != 8)
+        return std::nullopt;
+    return Imf::Chromaticities({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]});
+}
+
+// Seconds since the epoch of a "YYYY:MM:DD hh:mm:ss" date read as UTC (only differences are used).
+std::optional<std::time_t> dateSeconds(const std::string& date) {
+    std::tm t{};
+    if (std::sscanf(date.c_str(), "%d:%d:%d %d:%d:%d", &t.tm_year, &t.tm_mon, &t.tm_mday, &t.tm_hour, &t.tm_min,
+                    &t.tm_sec) != 6)
+        return std::nullopt;
+    t.tm_year -= 1900;
+    t.tm_mon -= 1;
+    return timegm(&t);
+}
+
+std::string joined(const std::vector<std::string>& parts, char separator) {
+    std::string s;
+    for (const std::string& p : parts) s += (s.empty() ? "" : std::string(1, separator)) + p;
+    return s;
+}
+
+// The header lines sorted by where they go. Lines an attribute cannot take (a second CAPDATE=, a malformed
+// PRIMARIES=) stay in `other`, so nothing is lost.
+struct SortedHeader {
+    std::vector<std::string> commands, software, views, other;
+    std::string capDate, gmt;
+    std::optional<Imf::Chromaticities> primaries;
+};
+
+bool takeDate(const std::string& line, std::string_view name, std::string& date) {
+    if (!isHeaderVariable(line, name) || !date.empty() || !dateSeconds(valueOf(line, name))) return false;
+    date = valueOf(line, name);
+    return true;
+}
+
+SortedHeader sortHeader(const std::vector<std::string>& lines) {
+    SortedHeader s;
+    for (const std::string& line : lines) {
+        if (isHeaderVariable(line, "FORMAT=") || isHeaderVariable(line, "PIXASPECT=") ||
+            isHeaderVariable(line, "EXPOSURE="))
+            continue;  // the channels and the products below say these
+        if (isHeaderVariable(line, "VIEW=")) s.views.push_back(valueOf(line, "VIEW="));
+        else if (isHeaderVariable(line, "SOFTWARE=")) s.software.push_back(valueOf(line, "SOFTWARE="));
+        else if (takeDate(line, "CAPDATE=", s.capDate) || takeDate(line, "GMT=", s.gmt)) continue;
+        else if (isHeaderVariable(line, "PRIMARIES=") && !s.primaries && primariesOf(valueOf(line, "PRIMARIES=")))
+            s.primaries = primariesOf(valueOf(line, "PRIMARIES="));
+        else if (isCommandLine(line)) s.commands.push_back(line);
+        else s.other.push_back(line);
+    }
+    return s;
+}
+
+void addString(Imf::Header& h, const char* name, const std::vector<std::string>& lines, char separator) {
+    if (!lines.empty()) h.insert(name, Imf::StringAttribute(joined(lines, separator)));
+}
+
+void addDates(Imf::Header& h, const SortedHeader& s) {
+    if (!s.capDate.empty()) Imf::addCapDate(h, s.capDate);
+    if (!s.capDate.empty() && !s.gmt.empty())
+        Imf::addUtcOffset(h, float(std::difftime(*dateSeconds(s.gmt), *dateSeconds(s.capDate))));
+}
+
+Imf::Header exrHeader(const Picture& p, ExrPixels pixels) {
+    double aspect = headerProduct(p.header, "PIXASPECT="), exposure = headerProduct(p.header, "EXPOSURE=");
+    if (!(aspect > 0) || !(exposure > 0)) throw std::runtime_error("bad PIXASPECT= or EXPOSURE= in the header");
+    Imf::Header h(p.width, p.height, float(1 / aspect), Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
+    for (const char* name : kChannels)
+        h.channels().insert(name, Imf::Channel(pixels == ExrPixels::half ? Imf::HALF : Imf::FLOAT));
+    SortedHeader s = sortHeader(p.header);
+    Imf::addChromaticities(h, p.xyz ? kXyzPrimaries : s.primaries.value_or(kRadiancePrimaries));
+    Imf::addWhiteLuminance(h, float(kWhiteEfficacy / exposure));
+    addDates(h, s);
+    addString(h, "comments", s.commands, '\n');
+    addString(h, "Software", s.software, '\n');
+    addString(h, "view", s.views, ' ');
+    addString(h, "radianceHeader", s.other, '\n');
+    return h;
+}
+
+// ---- writing, through a temporary file ----
+
+// A new file beside `path`, renamed over it by commit() once written and synced; removed if never committed.
+class PendingFile {
+public:
+    explicit PendingFile(const std::string& path) {
+        std::filesystem::path target(path);
+        std::random_device random;
+        for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
+            char suffix[32];
+            std::snprintf(suffix, sizeof suffix, ".%08x.tmp", unsigned(random()));
+            name_ = (target.parent_path() / ("." + target.filename().string() + suffix)).string();
+            // 0666 as for any new file: the umask decides, as it would for `path` itself.
+            fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            if (fd_ < 0 && errno != EEXIST) break;
+        }
+        if (fd_ < 0) throw std::runtime_error(std::strerror(errno));
+    }
+    PendingFile(const PendingFile&) = delete;
+    PendingFile& operator=(const PendingFile&) = delete;
+    ~PendingFile() {
+        if (fd_ >= 0) ::close(fd_);
+        if (!committed_) ::unlink(name_.c_str());
+    }
+    const std::string& name() const { return name_; }
+
+    void commit(const std::string& path) {
+        // The data reaches the disk before the name does: after a crash, `path` is the old file or the new.
+        if (::fsync(fd_) != 0 || ::close(std::exchange(fd_, -1)) != 0 || std::rename(name_.c_str(), path.c_str()) != 0)
+            throw std::runtime_error(std::strerror(errno));
+        committed_ = true;
+    }
+
+private:
+    std::string name_;
+    int fd_ = -1;
+    bool committed_ = false;
+};
+
+// OpenEXR converts pixel types when reading but not when writing: the frame buffer has the file's type.
+template <class Pixel>
+void writePixels(const std::string& name, const Imf::Header& h, const std::vector<Pixel>& pixels, Imf::PixelType type,
+                 int width, int height) {
+    Imf::OutputFile file(name.c_str(), h);
+    Imf::FrameBuffer frame;
+    char* base = reinterpret_cast<char*>(const_cast<Pixel*>(pixels.data()));  // OutputFile only reads
+    for (int c = 0; c < 3; ++c)
+        frame.insert(kChannels[c], Imf::Slice(type, base + c * sizeof(Pixel), 3 * sizeof(Pixel),
+                                              3 * sizeof(Pixel) * size_t(width)));
+    file.setFrameBuffer(frame);
+    file.writePixels(height);
+}
+
+// Half would turn values beyond its range into infinities (a sun's disc is ~10^7), which spread to every
+// pixel a filter touches; the largest half keeps them finite and as bright as half can say.
+std::vector<half> halves(const std::vector<float>& pixels) {
+    std::vector<half> h(pixels.size());
+    for (size_t i = 0; i < pixels.size(); ++i) h[i] = half(std::clamp(pixels[i], -kHalfMax, kHalfMax));
+    return h;
+}
+
+}  // namespace
+
+void writeOpenExrPicture(const std::string& path, const Picture& p, ExrPixels pixels) {
+    try {
+        Imf::Header header = exrHeader(p, pixels);
+        PendingFile file(path);
+        if (pixels == ExrPixels::half) writePixels(file.name(), header, halves(p.pixels), Imf::HALF, p.width, p.height);
+        else writePixels(file.name(), header, p.pixels, Imf::FLOAT, p.width, p.height);
+        file.commit(path);
+    } catch (const std::exception& e) {
+        throw Error("cannot write " + path + ": " + e.what());
+    }
+}
+
+namespace {
+
+// ---- attributes back to Radiance header lines ----
+
+const std::string* stringAttribute(const Imf::Header& h, const char* name) {
+    const auto* a = h.findTypedAttribute<Imf::StringAttribute>(name);
+    return a ? &a->value() : nullptr;
+}
+
+void addLines(std::vector<std::string>& lines, const std::string* text, const std::string& prefix) {
+    if (!text) return;
+    std::istringstream in(*text);
+    for (std::string line; std::getline(in, line);) lines.push_back(prefix + line);
+}
+
+bool isXyz(const Imf::Chromaticities& c) {
+    auto near = [](Imath::V2f a, Imath::V2f b) { return (a - b).length() < 1e-4f; };
+    return near(c.red, kXyzPrimaries.red) && near(c.green, kXyzPrimaries.green) && near(c.blue, kXyzPrimaries.blue);
+}
+
+std::string formatted(const char* format, double v) {
+    char s[64];
+    std::snprintf(s, sizeof s, format, v);
+    return s;
+}
+
+void addDateLines(std::vector<std::string>& lines, const Imf::Header& h) {
+    if (!Imf::hasCapDate(h)) return;
+    const std::string& capDate = Imf::capDate(h);
+    lines.push_back("CAPDATE= " + capDate);
+    std::optional<std::time_t> local = dateSeconds(capDate);
+    if (!Imf::hasUtcOffset(h) || !local) return;
+    std::time_t gmt = *local + std::time_t(std::lround(Imf::utcOffset(h)));
+    std::tm t{};
+    char text[32];
+    std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", gmtime_r(&gmt, &t));
+    lines.push_back(std::string("GMT= ") + text);
+}
+
+std::string primariesLine(const Imf::Chromaticities& c) {
+    char s[128];
+    std::snprintf(s, sizeof s, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f", c.red.x, c.red.y, c.green.x,
+                  c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y);
+    return s;
+}
+
+// Fills the header lines, exposure and pixel aspect from the attributes, in rpict's order.
+void readHeaderLines(const Imf::Header& h, Picture& p) {
+    std::vector<std::string>& lines = p.header;
+    addLines(lines, stringAttribute(h, "comments"), "");
+    addLines(lines, stringAttribute(h, "Software"), "SOFTWARE= ");
+    addLines(lines, stringAttribute(h, "radianceHeader"), "");
+    if (const std::string* view = stringAttribute(h, "view")) lines.push_back("VIEW= " + *view);
+    p.pixelAspect = 1 / double(h.pixelAspectRatio());
+    if (std::abs(p.pixelAspect - 1) > 1e-6) lines.push_back(formatted("PIXASPECT=%f", p.pixelAspect));
+    addDateLines(lines, h);
+    if (Imf::hasWhiteLuminance(h)) p.exposure = kWhiteEfficacy / Imf::whiteLuminance(h);
+    if (std::abs(p.exposure - 1) > 1e-6) lines.push_back(formatted("EXPOSURE=%.4e", p.exposure));
+    p.xyz = Imf::hasChromaticities(h) && isXyz(Imf::chromaticities(h));
+    if (Imf::hasChromaticities(h) && !p.xyz) lines.push_back(primariesLine(Imf::chromaticities(h)));
+}
+
+// R, G, B as floats, exact whether stored as half or float.
+void readRgb(Imf::InputFile& file, Picture& p) {
+    Imath::Box2i dw = file.header().dataWindow();
+    size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(p.width);
+    char* base = reinterpret_cast<char*>(p.pixels.data()) - dw.min.x * xStride - dw.min.y * yStride;
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 3; ++c) frame.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
+    file.setFrameBuffer(frame);
+    file.readPixels(dw.min.y, dw.max.y);
+}
+
+// Pictures without R, G, B (luminance alone, or luminance and chroma): the RGBA interface converts them.
+void readLuminanceChroma(const std::string& path, Picture& p) {
+    Imf::RgbaInputFile file(path.c_str());
+    Imath::Box2i dw = file.dataWindow();
+    Imf::Array2D<Imf::Rgba> rgba(p.height, p.width);
+    file.setFrameBuffer(&rgba[0][0] - dw.min.x - dw.min.y * p.width, 1, p.width);
+    file.readPixels(dw.min.y, dw.max.y);
+    for (int y = 0; y < p.height; ++y)
+        for (int x = 0; x < p.width; ++x) {
+            float* o = p.at(x, y);
+            o[0] = rgba[y][x].r;
+            o[1] = rgba[y][x].g;
+            o[2] = rgba[y][x].b;
+        }
+}
+
+}  // namespace
+
+Picture readOpenExrPicture(const std::string& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& h = file.header();
+        Picture p;
+        p.width = h.dataWindow().max.x - h.dataWindow().min.x + 1;
+        p.height = h.dataWindow().max.y - h.dataWindow().min.y + 1;
+        if (double(p.width) * p.height > kMaxPicturePixels) throw std::runtime_error("picture too large");
+        p.pixels.resize(size_t(p.width) * p.height * 3);
+        readHeaderLines(h, p);
+        const Imf::ChannelList& channels = h.channels();
+        if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B")) readRgb(file, p);
+        else readLuminanceChroma(path, p);
+        return p;
+    } catch (const std::exception& e) {
+        throw Error(path + ": " + e.what());
+    }
+}
+
+}  // namespace brume
