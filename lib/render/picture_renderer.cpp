@@ -41,9 +41,12 @@ public:
     }
 
     RenderedPicture run() {
-        if (progress_) progress_->start(long(w_) * h_);
-        if (s_.sampleSpacing <= 1 || w_ < 2 || h_ < 2) traceAll();
-        else adaptive();
+        bool adapt = s_.sampleSpacing > 1 && w_ >= 2 && h_ >= 2;
+        if (adapt) xs_ = gridLines(w_, s_.sampleSpacing), ys_ = gridLines(h_, s_.sampleSpacing);
+        // Progress counts the first pass's samples, then every pixel again as its row is settled.
+        if (progress_) progress_->start(long(w_) * h_ + long(xs_.size() * ys_.size()));
+        if (adapt) adaptive();
+        else traceAll();
         if (progress_) progress_->finish();
         if (s_.depth) out_.depth = std::move(depth_);
         return std::move(out_);
@@ -85,9 +88,10 @@ private:
 
     // First pass on the grid; tiles whose corners differ are traced whole, the others interpolated.
     void adaptive() {
-        std::vector<int> xs = gridLines(w_, s_.sampleSpacing), ys = gridLines(h_, s_.sampleSpacing);
+        const std::vector<int>&xs = xs_, &ys = ys_;
         tbb::parallel_for(size_t(0), ys.size(), [&](size_t j) {
             for (int x : xs) trace(x, ys[j]);
+            if (progress_) progress_->advance(long(xs.size()), long(xs.size()));
         });
         std::vector<char> busy((xs.size() - 1) * (ys.size() - 1));
         for (size_t j = 0; j + 1 < ys.size(); ++j)
@@ -148,6 +152,7 @@ private:
     RenderedPicture out_;
     std::vector<float> depth_;
     std::vector<char> traced_;
+    std::vector<int> xs_, ys_;  // the first pass's columns and rows
 };
 
 }  // namespace
