@@ -1,6 +1,7 @@
 // rpict: pictures of a scene from views, as Radiance's rpict (see man/rpict.1).
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -199,6 +200,8 @@ int run(int argc, char** argv) {
     checkRenderSettings(o.render);
     if (o.sequenceStart < 0) throw Error("bad sequence start " + std::to_string(o.sequenceStart));
     if (o.sequenceStart > 0 && !o.cameraPath.empty()) throw Error("-S and -path are exclusive");
+    if (o.sequenceStart > 0 && std::find(line->scene.begin(), line->scene.end(), "-") != line->scene.end())
+        throw Error("the scene cannot be read from the standard input with -S (the views are)");
     bool sequence = o.sequenceStart > 0 || !o.cameraPath.empty();
     if (!sequence && !o.output.empty() && namesFrames(o.output))
         throw Error("output pattern '" + o.output + "' names frames, but there is no sequence (-S or -path)");

@@ -9,6 +9,7 @@
 #include "fuzz/exercise_cal.h"
 #include "fuzz/exercise_font.h"
 #include "fuzz/exercise_pattern_data.h"
+#include "fuzz/exercise_view.h"
 #include "fuzz/mesh_invariants.h"
 #include "integrator/render_scene.h"
 #include "io/ray_reader.h"
@@ -122,4 +123,8 @@ TEST(FuzzCorpus, FontInputsAreReadOrRefusedCleanly) {
     replay("corpus_font", [](std::istream& in) {
         fuzz::exerciseFont(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
     });
+}
+
+TEST(FuzzCorpus, ViewLinesAndCameraPathsGiveFiniteRays) {
+    for (const std::string& input : corpus("corpus_view")) EXPECT_TRUE(exerciseViewText(input)) << input;
 }

@@ -47,6 +47,10 @@ CameraKey parseKey(const std::string& line, const SourceLocation& where, const d
 CameraPath CameraPath::read(const std::string& path, const dvec3& defaultUp) {
     std::ifstream in(path);
     if (!in) throw Error(path + ": cannot open camera path");
+    return parse(in, path, defaultUp);
+}
+
+CameraPath CameraPath::parse(std::istream& in, const std::string& path, const dvec3& defaultUp) {
     CameraPath p;
     std::string line;
     for (int n = 1; std::getline(in, line); ++n) {

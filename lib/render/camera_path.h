@@ -4,6 +4,7 @@
 // along great circles, the direction's length — the focal distance — linearly), so a frame rate gives
 // evenly timed frames whatever the keys' spacing.
 #pragma once
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ class CameraPath {
 public:
     // Reads the file; `defaultUp` is the up vector of keys that give none. Throws Error "file:line: ...".
     static CameraPath read(const std::string& path, const dvec3& defaultUp);
+    // The same from a stream, `name` in messages.
+    static CameraPath parse(std::istream& in, const std::string& name, const dvec3& defaultUp);
 
     // The view at `time`, clamped to the path's span; the rest of `base` (type, sizes, clipping) kept.
     View at(double time, const View& base) const;
