@@ -114,16 +114,23 @@ bool nextViewLine(View& view, std::optional<double>& time) {
     return false;
 }
 
+// Radiance's rpict header, in its order: the octree's header, the command, SOFTWARE=, FRAME=, VIEW=,
+// PIXASPECT=, CAPDATE=, GMT=, PRIMARIES= (FORMAT= is the writer's); Brume's SCENETIME= after PIXASPECT=.
+// A later frame on the standard output starts at FRAME=, continuing the first frame's header, as Radiance's.
 std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::string>& command, const Frame& f,
-                                   const PictureSettings& p) {
+                                   const PictureSettings& p, bool laterFrame) {
     std::vector<std::string> h;
-    for (const std::string& line : scene.headerLines)
-        if (line.rfind("FORMAT=", 0) != 0 && line != "#?RADIANCE") h.push_back(line);
-    h.push_back(commandLine(command));
-    std::istringstream dates(softwareAndDates());
-    for (std::string line; std::getline(dates, line);) h.push_back(line);
+    std::istringstream software(softwareAndDates());
+    std::string line;
+    std::getline(software, line);
+    if (!laterFrame) {
+        for (const std::string& l : scene.headerLines)
+            if (l.rfind("FORMAT=", 0) != 0 && l != "#?RADIANCE") h.push_back(l);
+        h.push_back(commandLine(command));
+        h.push_back(line);
+    }
+    if (f.number > 0) h.push_back("FRAME=" + std::to_string(f.number));
     h.push_back("VIEW= " + f.view.options());
-    h.push_back("PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333");  // Radiance's RGB
     char buf[64];
     if (p.pixelAspect != 1) {
         std::snprintf(buf, sizeof buf, "PIXASPECT=%f", p.pixelAspect);
@@ -133,7 +140,8 @@ std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::st
         std::snprintf(buf, sizeof buf, "SCENETIME= %.10g", *f.time);
         h.push_back(buf);
     }
-    if (f.number > 0) h.push_back("FRAME=" + std::to_string(f.number));
+    while (std::getline(software, line)) h.push_back(line);  // CAPDATE=, GMT=
+    h.push_back("PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333");  // Radiance's RGB
     return h;
 }
 
@@ -178,8 +186,9 @@ private:
         settings.time = f.time;
         Integrator integrator(renderScene_, settings);
         RenderedPicture r = renderPicture(integrator, f.view, p, &progress_);
-        r.picture.header = headerFor(scene_, command_, f, p);
-        if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture);
+        bool laterFrame = picturePath.empty() && framesOnOutput_++ > 0;
+        r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
+        if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture, laterFrame);
         else writePictureFile(picturePath, r.picture, o_.exrFloat);
         if (p.depth) writeDepth(frameFileName(o_.depthOutput, f.number), r.depth);
     }
@@ -189,6 +198,7 @@ private:
     RenderScene renderScene_;
     std::vector<std::string> command_;
     ProgressMeter progress_;
+    int framesOnOutput_ = 0;
 };
 
 int run(int argc, char** argv) {

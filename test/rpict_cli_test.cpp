@@ -97,14 +97,17 @@ TEST_F(RpictCli, SequencesWriteNumberedFramesAndSkipExistingOnes) {
     EXPECT_FALSE(fs::exists(dir() / "f4.hdr"));
 }
 
-// Without -o, the frames of a sequence follow one another on the standard output, as Radiance's.
-TEST_F(RpictCli, SequenceFramesAreConcatenatedOnTheOutput) {
+// Without -o, the frames of a sequence follow one another on the standard output as Radiance's do: one
+// "#?RADIANCE" header, each later frame's header starting at its FRAME= line (as Radiance's ra_rgbe reads).
+TEST_F(RpictCli, SequenceFramesFollowOneAnotherOnTheOutput) {
     Output r = rpict("-x 8 -y 8 -S 1 s.rad", "VIEW= -vp 0 -2 1\nVIEW= -vp 0 -3 1\n");
     ASSERT_EQ(r.status, 0) << r.err;
-    size_t second = r.out.find("#?RADIANCE", 1);
+    size_t second = r.out.find("FRAME=2\nVIEW= -vtv -vp 0 -3 1 ");
     ASSERT_NE(second, std::string::npos);
+    EXPECT_EQ(r.out.find("#?RADIANCE", 1), std::string::npos);
+    EXPECT_NE(r.out.find("\nSOFTWARE= Brume 0.1\nFRAME=1\nVIEW= -vtv -vp 0 -2 1 "), std::string::npos) << r.out;
     EXPECT_EQ(picture(r.out.substr(0, second)).width, 8);
-    EXPECT_EQ(picture(r.out.substr(second)).width, 8);
+    EXPECT_EQ(picture("#?RADIANCE\n" + r.out.substr(second)).width, 8);
 }
 
 // A camera path at 4 frames a second over 1 s: 5 frames, each with its scene time.

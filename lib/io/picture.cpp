@@ -192,8 +192,8 @@ void writeComponent(std::ostream& out, const unsigned char* c, int n) {
 
 }  // namespace
 
-void writeRadiancePicture(std::ostream& out, const Picture& p) {
-    out << "#?RADIANCE\n";
+void writeRadiancePicture(std::ostream& out, const Picture& p, bool laterFrame) {
+    if (!laterFrame) out << "#?RADIANCE\n";
     for (const std::string& line : p.header)
         // Primaries describe RGB; Radiance writes none for XYZE. FORMAT= is the picture's own.
         if (!isHeaderVariable(line, "FORMAT=") && !(p.xyz && isHeaderVariable(line, "PRIMARIES="))) out << line << '\n';

@@ -32,7 +32,8 @@ Picture readRadiancePicture(std::istream& in, const std::string& name);
 
 // Writes `picture` as a run-length encoded Radiance picture: "#?RADIANCE", the header lines (without
 // PRIMARIES= when XYZE), FORMAT=, the blank line, "-Y height +X width" and the scanlines, laid out as
-// Radiance 6.1 lays them out.
-void writeRadiancePicture(std::ostream& out, const Picture& picture);
+// Radiance 6.1 lays them out. A later frame of a stream of frames (Radiance's rpict -S without -o) goes
+// without the "#?RADIANCE" line: its header lines continue the first frame's, as Radiance's ra_rgbe expects.
+void writeRadiancePicture(std::ostream& out, const Picture& picture, bool laterFrame = false);
 
 }  // namespace brume
