@@ -28,6 +28,9 @@ struct ViewCase {
     std::string name, options;  // the picture's name and its view and resolution options
 };
 
+// gtest names a case by its picture rather than printing its bytes.
+void PrintTo(const ViewCase& v, std::ostream* os) { *os << v.name; }
+
 // views.txt: "name options..." lines; '#' starts a comment line.
 std::vector<ViewCase> readViews() {
     std::ifstream in(kData + "views.txt");
