@@ -276,6 +276,9 @@ double Integrator::misWeightForLight(const Light& light, const PathState& state,
 }
 
 Spectrum Integrator::escaped(const Ray& ray, const PathState& state, RayRecord* record, Spectrum* misEmission) const {
+    // A ray with a length limit (a view's aft clipping plane, rtrace's ray length) ends before infinity,
+    // where distant sources and skies are: black, as in Radiance.
+    if (std::isfinite(ray.tmax)) return Spectrum(0.f);
     // Radiance's order: real sources first, then glows (skies).
     for (bool glows : {false, true}) {
         for (int li : scene_.distantLights()) {
