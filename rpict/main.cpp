@@ -180,6 +180,7 @@ private:
     void renderTo(const Frame& f, const std::string& picturePath) {
         PictureSettings p = o_.picture;
         p.depth = !o_.depthOutput.empty();
+        p.drawSources = o_.render.directVisible && p.aperture == 0;
         fitResolution(f.view, p);
         if (p.xres <= 0 || p.yres <= 0) throw Error("resolution " + std::to_string(p.xres) + "x" + std::to_string(p.yres) + " has no pixels");
         RenderSettings settings = o_.render;

@@ -57,6 +57,7 @@ public:
     // The seed of the samples of ray `index` (fixed by -u-, else new each run); pictures seed their pixel
     // jitter from it too.
     uint64_t seedFor(uint64_t index) const;
+    const RenderScene& scene() const { return scene_; }
 
 private:
     struct PathState;

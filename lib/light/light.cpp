@@ -20,6 +20,19 @@ double sphereOneMinusCos(double r, double d) {
     double sin2 = (r / d) * (r / d);
     return sin2 / (1 + std::sqrt(std::max(0.0, 1 - sin2)));
 }
+// A regular 16-gon about `centre` in the plane across unit `axis`, enclosing the circle of radius r (with
+// 1.3% more area).
+void circleOutline(const dvec3& centre, const dvec3& axis, double r, std::vector<dvec3>& out) {
+    constexpr int kSides = 16;
+    dvec3 e1 = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+    dvec3 e2 = glm::cross(axis, e1);
+    double reach = r / std::cos(kPi / kSides);
+    for (int k = 0; k < kSides; ++k) {
+        double a = 2 * kPi * k / kSides;
+        out.push_back(centre + reach * (std::cos(a) * e1 + std::sin(a) * e2));
+    }
+}
+
 }  // namespace
 
 Light::Light(const Surface& surface, SurfaceId id, const Emitter* emitter, bool patterned)
@@ -224,6 +237,33 @@ double Light::pdf(const dvec3& p, const dvec3& dir, double distance, const dvec3
         if (LightView v = view(p); v.solidAngle > 0) return 1 / v.solidAngle;
     double cosLight = -glm::dot(hitNormal, dir);
     return cosLight > 0 ? distance * distance / (area_ * cosLight) : 0;
+}
+
+std::vector<dvec3> Light::outline(const dvec3& eye) const {
+    std::vector<dvec3> out;
+    if (isDistant()) {  // the cone of directions, on the plane one unit along it
+        double half = std::acos(1 - oneMinusCos_);
+        circleOutline(eye + direction_, direction_, std::tan(half), out);
+        return out;
+    }
+    if (const auto* poly = std::get_if<Polygon>(shape_)) {
+        if (glm::dot(eye - poly->vertices[0], poly->normal) <= 0) return out;  // seen from behind: dark
+        return poly->vertices;
+    }
+    if (const auto* sphere = std::get_if<Sphere>(shape_)) {
+        // The tangent cone from the eye meets the plane through the centre in a circle of radius r·D/√(D²−r²).
+        dvec3 toCentre = sphere->center - eye;
+        double d2 = glm::dot(toCentre, toCentre), r2 = sphere->radius * sphere->radius;
+        if (d2 <= r2) return out;
+        circleOutline(sphere->center, toCentre / std::sqrt(d2), sphere->radius * std::sqrt(d2 / (d2 - r2)), out);
+    } else if (const auto* ring = std::get_if<Ring>(shape_)) {
+        circleOutline(ring->center, ring->normal, ring->outerRadius, out);
+    } else if (const auto* cone = std::get_if<Cone>(shape_)) {
+        dvec3 axis = glm::normalize(cone->top - cone->base);
+        circleOutline(cone->base, axis, cone->baseRadius, out);
+        circleOutline(cone->top, axis, cone->topRadius, out);
+    }
+    return out;
 }
 
 }  // namespace brume

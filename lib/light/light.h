@@ -59,6 +59,10 @@ public:
     const Emitter& emitter() const { return *emitter_; }
     // Whether a ray in direction d that escapes the scene meets this distant source.
     bool distantContains(const dvec3& d) const;
+    // Points whose outline, as seen from `eye`, encloses the source: a polygon's corners, 16-gons about
+    // round shapes (their silhouettes), for a distant source points one unit from the eye. Empty when the eye
+    // is inside a sphere's or behind a flat source.
+    std::vector<dvec3> outline(const dvec3& eye) const;
 
 private:
     std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "render/progress.h"
+#include "render/small_sources.h"
 #include "view/aperture.h"
 #include "view/pixel_aspect.h"
 
@@ -47,6 +48,9 @@ public:
         if (progress_) progress_->start(long(w_) * h_ + long(xs_.size() * ys_.size()));
         if (adapt) adaptive();
         else traceAll();
+        if (s_.drawSources && !s_.irradiance)
+            drawSmallSources(integrator_, integrator_.scene(), view_, std::max(1, s_.sampleSpacing), out_.picture,
+                             s_.depth ? &depth_ : nullptr);
         if (progress_) progress_->finish();
         if (s_.depth) out_.depth = std::move(depth_);
         return std::move(out_);

@@ -22,6 +22,7 @@ struct PictureSettings {
     int sampleSpacing = 4;          // -ps: pixels between the samples of the first pass
     double sampleThreshold = 0.05;  // -pt: relative difference between samples above which pixels are traced
     bool irradiance = false;        // -i: irradiance at the surfaces seen, not their radiance
+    bool drawSources = true;        // draw sources narrower than -ps pixels (Radiance's rule: with -dv+ and no -pd)
     bool depth = false;             // keep each pixel's distance (-z)
 };
 
@@ -33,7 +34,8 @@ struct RenderedPicture {
 // The resolution and pixel aspect `settings` give for `view` (Radiance's normaspect).
 void fitResolution(const View& view, PictureSettings& settings);
 
-// Renders a valid `view`; `settings` must have been fitted. Progress counts pixels.
+// Renders a valid `view`; `settings` must have been fitted. Progress counts pixels. Light sources too small
+// for the sampling are drawn in by their coverage of each pixel (small_sources.h).
 RenderedPicture renderPicture(const Integrator& integrator, const View& view, const PictureSettings& settings,
                               ProgressMeter* progress = nullptr);
 

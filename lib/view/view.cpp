@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -116,6 +117,48 @@ double View::aspect() const {
     Frame f;
     if (std::string p = makeFrame(*this, f); !p.empty()) throw Error(p);
     return std::sqrt(f.vn2 / f.hn2);
+}
+
+std::optional<glm::dvec2> View::location(const dvec3& p) const {
+    Frame f;
+    if (!makeFrame(*this, f).empty()) return std::nullopt;
+    dvec3 d = p - vp, h = glm::normalize(f.hvec), u = glm::normalize(f.vvec);
+    double z = glm::dot(d, f.dir), a = glm::dot(d, h), b = glm::dot(d, u);
+    double hn = std::sqrt(f.hn2), vn = std::sqrt(f.vn2);
+    double x, y;  // centred on the view axis, in image widths and heights
+    switch (type) {
+    case kParallel:
+        x = a / hn, y = b / vn;
+        break;
+    case kPerspective:
+        if (z <= 0) return std::nullopt;
+        x = a / (z * hn), y = b / (z * vn);
+        break;
+    case kCylindrical: {
+        double across = std::hypot(z, a);
+        if (!(across > 0)) return std::nullopt;
+        x = std::atan2(a, z) / (vh * kDegree), y = b / (across * vn);
+        break;
+    }
+    default: {  // the fisheyes, by the unit direction toward p
+        double len = glm::length(d);
+        if (!(len > 0)) return std::nullopt;
+        z /= len, a /= len, b /= len;
+        if (type == kHemispherical) {
+            if (z < 0) return std::nullopt;
+            x = a / hn, y = b / vn;
+        } else if (type == kAngular) {
+            double angle = std::acos(std::clamp(z, -1.0, 1.0)), s = std::hypot(a, b);
+            if (angle > M_PI - kTiny) return std::nullopt;
+            double k = s > kTiny ? angle / (M_PI * s) : 1 / M_PI;  // angle/π along the direction off axis
+            x = a * k * 180 / vh, y = b * k * 180 / vv;
+        } else {  // planisphere
+            if (z <= -1 + kTiny) return std::nullopt;
+            x = a / ((1 + z) * hn), y = b / ((1 + z) * vn);
+        }
+    }
+    }
+    return glm::dvec2(x + 0.5 - vs, y + 0.5 - vl);
 }
 
 std::optional<ViewRay> View::ray(double x, double y) const {

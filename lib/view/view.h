@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include <glm/vec2.hpp>
+
 #include "geometry/ray.h"
 
 namespace brume {
@@ -54,6 +56,10 @@ struct View {
     // -vth, 180° for -vta; Radiance's angular fisheye does give rays in the corners outside its circle), and
     // for an invalid view.
     std::optional<ViewRay> ray(double x, double y) const;
+    // The inverse of ray() (Radiance's viewloc): the image point (x, y) whose ray passes through world point
+    // p, outside [0, 1] when p is outside the picture; nullopt when p is behind the view (or at a fisheye's
+    // blind direction) and for an invalid view. Clipping distances are ignored.
+    std::optional<glm::dvec2> location(const dvec3& p) const;
 
     // The height over the width of the view's image (Radiance's viewaspect): tan(vv/2)/tan(vh/2) for a
     // perspective view, vv/vh for a parallel or angular one, the ratio of the image-plane extents for the

@@ -309,3 +309,28 @@ TEST(View, MatchesRadiancesVwrays) {
         }
     }
 }
+
+// location() undoes ray(): the point a pixel's ray reaches, 3 units on, projects back onto that pixel, for
+// every view type, shifted and lifted too; points behind are refused.
+TEST(View, LocationIsTheInverseOfRay) {
+    for (char type : {'v', 'l', 'h', 'a', 's', 'c'}) {
+        View v;
+        v.type = type;
+        v.vp = {1, 2, 3};
+        v.vd = {0.3, 1, -0.2};
+        v.vh = type == 'l' ? 4 : type == 'v' ? 60 : 150;
+        v.vv = type == 'l' ? 3 : type == 'v' ? 45 : 120;
+        v.vs = 0.1, v.vl = -0.05;
+        for (double x : {0.02, 0.3, 0.5, 0.91})
+            for (double y : {0.07, 0.5, 0.8}) {
+                auto r = v.ray(x, y);
+                if (!r) continue;
+                auto at = v.location(r->org + 3.0 * r->dir);
+                ASSERT_TRUE(at) << type;
+                EXPECT_NEAR(at->x, x, 1e-9) << type << " " << x << " " << y;
+                EXPECT_NEAR(at->y, y, 1e-9) << type << " " << x << " " << y;
+            }
+    }
+    View v;
+    EXPECT_FALSE(v.location({0, -1, 0}));  // behind a perspective view
+}
