@@ -24,56 +24,90 @@ double Integrator::subdivision(const PathState& state) const {
 
 bool Integrator::exactDirect(const PathState& state) const { return state.depth == 0; }
 
+// Radiance's -dt skips the shadow tests of sources whose share of the unoccluded light is below the
+// threshold and guesses their visibility, which is biased. Here such sources get fewer shadow rays instead,
+// in proportion to their share, down to one: the count depends only on the point, never on what the rays
+// find, so the estimate stays unbiased and only its noise grows, where it matters little.
+int Integrator::thresholdedCount(int count, double share) const {
+    double threshold = settings_.directThreshold;
+    if (!(threshold > 0) || share >= threshold) return count;
+    return std::max(1, int(std::ceil(count * share / threshold)));
+}
+
 // Every source sample. Diffuse lobes take their source light from here alone, as in Radiance (a few
 // stratified shadow rays beat thousands of diffuse rays that rarely find a small source); glossy lobes
 // that are also sampled by rays share it with them by the power heuristic.
 Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                             Context& ctx) const {
+    const std::vector<Light>& lights = scene_.lights();
+    auto sampled = [&](const Light& light) {
+        return light.emitter().isDirectSource() && !(surface && light.surface() == surface);
+    };
+    // Diffuse light of uniform sources: their unoccluded value in closed form (see directFrom), and how
+    // bright it is in all, for -dt. A scratch per thread, so that shading allocates nothing.
+    thread_local std::vector<double> closedForm;
+    closedForm.assign(lights.size(), -1.0);
+    double total = 0;
+    if (exactDirect(state) && !lobes.diffuse.isBlack() && !lobes.fresnelDiffuse)
+        for (size_t i = 0; i < lights.size(); ++i) {
+            if (!sampled(lights[i])) continue;
+            closedForm[i] = lights[i].unoccludedIrradiance(sh.point, sh.normal);
+            total += std::max(0.0, closedForm[i]) * brightness(lights[i].emitter().radiance);
+        }
     Spectrum sum(0.f);
-    for (const Light& light : scene_.lights()) {
-        const Emitter& e = light.emitter();
-        if (!e.isDirectSource() || (surface && light.surface() == surface)) continue;
-        // Diffuse light of a uniform source: its unoccluded value in closed form, less what the shadow rays
-        // find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
-        double closedForm = -1;
-        if (exactDirect(state) && !lobes.diffuse.isBlack() && !lobes.fresnelDiffuse)
-            closedForm = light.unoccludedIrradiance(sh.point, sh.normal);
-        Spectrum blocked(0.f);  // estimate of the irradiance the closed form counts but obstacles stop
-        bool anyThrough = false;  // some controlled shadow ray got through
-        int count = light.sampleCount(sh.point, subdivision(state), state.weight);
-        uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
-        LightView view = light.view(sh.point);
-        for (int k = 0; k < count; ++k) {
-            double u, v;
-            sobol2D(k, scramble, u, v);
-            auto s = light.sample(view, u, v);
-            if (!s || s->radiance.isBlack()) continue;
-            if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
-            double lightDensity = s->pdf * count;
-            double cosL = glm::dot(sh.normal, s->dir);
-            bool controlled = closedForm >= 0 && cosL > 0;
-            Spectrum f = response(sh, lobes, s->dir, lightDensity, !controlled);
-            if (f.isBlack() && !controlled) continue;
-            Spectrum le = sourceRadiance(light, *s, sh.point);
-            Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
-                                             light, state, ctx);
-            if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
-            sum += f * t * le * float(1 / lightDensity);
-            if (controlled) {
-                blocked += (Spectrum(1.f) - t) * float(cosL / lightDensity);
-                anyThrough = anyThrough || !t.isBlack();
-            }
-        }
-        if (closedForm >= 0 && anyThrough) {
-            // Every ray blocked means shadow: 0, not the closed form less a noisy estimate of itself (for the
-            // sun, that noise alone would be a visible glow in every shadow). In penumbrae the estimate of
-            // what is blocked can still exceed the whole: never below 0.
-            Spectrum unblocked = Spectrum(float(closedForm)) - blocked;
-            for (int c = 0; c < unblocked.size(); ++c) unblocked[c] = std::max(0.f, unblocked[c]);
-            sum += lobes.diffuse * e.radiance * unblocked * float(1 / kPi);
-        }
+    for (size_t i = 0; i < lights.size(); ++i) {
+        if (!sampled(lights[i])) continue;
+        double share = closedForm[i] > 0 && total > 0 ? closedForm[i] * brightness(lights[i].emitter().radiance) / total : 1.0;
+        sum += directFrom(lights[i], closedForm[i], share, sh, lobes, surface, state, ctx);
     }
     if (mirrorImagesOn()) sum += directViaMirrors(sh, lobes, surface, state, ctx);
+    return sum;
+}
+
+// One source's light. With `closedForm` ≥ 0, the diffuse part is that unoccluded value less what the
+// shadow rays find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
+Spectrum Integrator::directFrom(const Light& light, double closedForm, double share, const Shading& sh,
+                                const Lobes& lobes, const SurfaceId& surface, const PathState& state,
+                                Context& ctx) const {
+    const Emitter& e = light.emitter();
+    Spectrum sum(0.f);
+    Spectrum blocked(0.f);  // estimate of the irradiance the closed form counts but obstacles stop
+    bool anyThrough = false;  // some controlled shadow ray got through
+    // Multiple importance weights take the count rays sampled by lobes assume (misWeightForLight): any
+    // weights that sum to one keep the estimate unbiased.
+    int nominal = light.sampleCount(sh.point, subdivision(state), state.weight);
+    int count = thresholdedCount(nominal, share);
+    uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    LightView view = light.view(sh.point);
+    for (int k = 0; k < count; ++k) {
+        double u, v;
+        sobol2D(k, scramble, u, v);
+        auto s = light.sample(view, u, v);
+        if (!s || s->radiance.isBlack()) continue;
+        if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
+        double cosL = glm::dot(sh.normal, s->dir);
+        bool controlled = closedForm >= 0 && cosL > 0;
+        Spectrum f = response(sh, lobes, s->dir, s->pdf * nominal, !controlled);
+        if (f.isBlack() && !controlled) continue;
+        Spectrum le = sourceRadiance(light, *s, sh.point);
+        Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
+                                         light, state, ctx);
+        if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
+        float weight = float(1 / (s->pdf * count));
+        sum += f * t * le * weight;
+        if (controlled) {
+            blocked += (Spectrum(1.f) - t) * float(cosL * weight);
+            anyThrough = anyThrough || !t.isBlack();
+        }
+    }
+    if (closedForm >= 0 && anyThrough) {
+        // Every ray blocked means shadow: 0, not the closed form less a noisy estimate of itself (for the
+        // sun, that noise alone would be a visible glow in every shadow). In penumbrae the estimate of
+        // what is blocked can still exceed the whole: never below 0.
+        Spectrum unblocked = Spectrum(float(closedForm)) - blocked;
+        for (int c = 0; c < unblocked.size(); ++c) unblocked[c] = std::max(0.f, unblocked[c]);
+        sum += lobes.diffuse * e.radiance * unblocked * float(1 / kPi);
+    }
     return sum;
 }
 
@@ -201,9 +235,12 @@ Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfi
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
         if (!hit) return toInfinity ? t : Spectrum(0.f);
-        Shading sh = shadingAt(ray, *hit, false, scene_.objectFrame(hit->surface));
-        // The source itself: its pattern is the caller's (sourceRadiance), only its material matters here.
-        int mat = hit->surface == target ? scene_.materialObject(target) : shaderAt(ray, *hit, sh, ctx);
+        // The source itself: its pattern is the caller's (sourceRadiance), only its material matters here,
+        // so the shading most shadow rays end on is skipped.
+        bool onTarget = hit->surface == target;
+        Shading sh;
+        if (!onTarget) sh = shadingAt(ray, *hit, false, scene_.objectFrame(hit->surface));
+        int mat = onTarget ? scene_.materialObject(target) : shaderAt(ray, *hit, sh, ctx);
         bool cut = mat < 0 || (state.clipCount > 0 && clipped(mat, state)) ||
                    crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
         if (cut) {
@@ -211,7 +248,7 @@ Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfi
             ray.leaving = hit->surface;
             continue;
         }
-        if (hit->surface == target) {
+        if (onTarget) {
             if (reached) *reached = *hit;
             return t;
         }

@@ -85,6 +85,9 @@ private:
                                 const SurfaceHit* hit, Spectrum* misEmission) const;
     Spectrum direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                     Context& ctx) const;
+    Spectrum directFrom(const Light& light, double closedForm, double share, const Shading& sh, const Lobes& lobes,
+                        const SurfaceId& surface, const PathState& state, Context& ctx) const;
+    int thresholdedCount(int count, double share) const;
     Spectrum ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                      Context& ctx) const;
     Spectrum glossy(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,

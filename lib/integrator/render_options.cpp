@@ -28,7 +28,7 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addBool("-u", s.randomSampling, "uncorrelated random sampling (- : reproducible, same result for any -n)");
     t.addBool("-bv", s.materials.backVisible, "back face visibility");
     t.addBool("-i", irradianceAtHit, "irradiance at the first opaque surface hit");
-    addReal(t, "-dt", s.directThreshold, "direct threshold (every source sample is tested)");
+    addReal(t, "-dt", s.directThreshold, "direct threshold (fewer shadow rays to weaker sources)");
     addReal(t, "-dc", s.directCertainty, "direct certainty");
     addReal(t, "-dj", s.sourceJitter, "direct jitter (sources are always sampled stratified)");
     addReal(t, "-ds", s.sourceSubdivision, "direct sampling: source size/distance ratio per shadow ray");

@@ -20,7 +20,7 @@ struct RenderSettings {
     double minWeight = 1e-4;         // -lw: rays below this weight are played by Russian roulette
     double sourceSubdivision = 0.2;  // -ds: more shadow rays for sources larger than this, seen from a point
     double sourceJitter = 0;         // -dj (sources are always sampled stratified; kept for compatibility)
-    double directThreshold = 0.03;   // -dt (every source sample is tested; kept for compatibility)
+    double directThreshold = 0.03;   // -dt: fewer shadow rays to sources with a smaller share of the light
     double directCertainty = 0.75;   // -dc
     int directRelays = 2;            // -dr (virtual sources through mirrors: not yet)
     int directPresamples = 512;      // -dp

@@ -7,6 +7,7 @@
 
 #include "geometry/surface.h"
 #include "light/emitter.h"
+#include "sampling/spherical_rectangle.h"
 #include "sampling/spherical_triangle.h"
 
 namespace brume {
@@ -23,6 +24,7 @@ struct LightSample {
 struct LightView {
     static constexpr size_t kMaxTriangles = 8;  // polygons with more are sampled by area
     dvec3 point;
+    SphericalRectangle rectangle;  // rectangular polygons, else their triangles
     SphericalTriangle triangles[kMaxTriangles];
     double solidAngle = 0;  // > 0 when the polygon is sampled by solid angle
 };
@@ -67,6 +69,7 @@ public:
 private:
     std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;
     std::optional<LightSample> sampleSolidAngle(const LightView& view, double u, double v) const;
+    dvec3 sampleTriangles(const LightView& view, double u, double v) const;
     void pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const;
 
     const Shape* shape_ = nullptr;
@@ -78,6 +81,7 @@ private:
     dvec3 center_{0};  // for the subdivision count
     double size_ = 0;
     std::vector<double> triangleCdf_;  // polygons: cumulative area of their triangles
+    std::optional<Rectangle> rectangle_;  // polygons that are rectangles
     dvec3 direction_{0};               // distant
     double oneMinusCos_ = 0;           // distant: 1 − cos(half angle)
 };
