@@ -47,8 +47,8 @@ void ProgressMeter::report(bool last) {
     double hours = std::chrono::duration<double>(Clock::now() - begin_).count() / 3600;
     double percent = total_ > 0 ? 100.0 * double(done_) / double(total_) : 100;
     if (live_)
-        std::fprintf(stderr, "\r%s: %ld samples, %6.2f%% after %.3f hours%s", program_.c_str(), long(samples_),
-                     percent, hours, last ? "\n" : "");
+        std::fprintf(stderr, "\r%s: %5.1f%% after %.0f s (%ld samples)%s", program_.c_str(), percent, hours * 3600,
+                     long(samples_), last ? "\n" : "");
     else
         std::fprintf(stderr, "%s: %ld samples, %4.2f%% after %.3f hours\n", program_.c_str(), long(samples_),
                      percent, hours);
