@@ -209,6 +209,10 @@ int run(int argc, char** argv) {
     auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\nDepthOfField\n");
     if (!line) return 0;
     checkRenderSettings(o.render);
+    if (o.render.ambientBounces > 0 && o.render.ambientDivisions > 64)
+        warn("no irradiance cache yet: -ab " + std::to_string(o.render.ambientBounces) + " path-traces " +
+             std::to_string(o.render.ambientDivisions) + " paths (-ad) from every pixel traced, a long run; "
+             "-ad 16 to 64 gives a noisier picture much sooner");
     if (o.sequenceStart < 0) throw Error("bad sequence start " + std::to_string(o.sequenceStart));
     if (o.sequenceStart > 0 && !o.cameraPath.empty()) throw Error("-S and -path are exclusive");
     if (o.sequenceStart > 0 && std::find(line->scene.begin(), line->scene.end(), "-") != line->scene.end())
