@@ -56,25 +56,26 @@ def read_rgb(text):
     return rows
 
 
-def run(cmd, stdin_path, env=None, capture=True):
-    """Runs cmd with stdin from a file; returns (stdout text or None, wall s, cpu s of the child)."""
-    with open(stdin_path, "rb") as fin:
+def run(cmd, stdin_path, env=None, capture=True, out_path=None):
+    """Runs cmd with stdin from a file and stdout captured (as text), discarded, or written to out_path;
+    returns (stdout text or None, wall s)."""
+    with open(stdin_path, "rb") as fin, open(out_path or os.devnull, "wb") as fout:
         t0 = time.perf_counter()
-        p = subprocess.Popen(cmd, stdin=fin, stdout=subprocess.PIPE if capture else subprocess.DEVNULL,
+        p = subprocess.Popen(cmd, stdin=fin, stdout=subprocess.PIPE if capture and not out_path else fout,
                              stderr=subprocess.PIPE, env=env)
         out, err = p.communicate()
         wall = time.perf_counter() - t0
     if p.returncode != 0:
         sys.exit("bench: command failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), err.decode(errors="replace")))
-    return (out.decode() if capture else None), wall
+    return (out.decode() if out is not None else None), wall
 
 
 class Timer:
     """Wall and CPU time (user + system of children) of one run."""
 
-    def __init__(self, cmd, stdin_path, env=None, capture=True):
+    def __init__(self, cmd, stdin_path, env=None, capture=True, out_path=None):
         before = os.times()
-        self.out, self.wall = run(cmd, stdin_path, env, capture)
+        self.out, self.wall = run(cmd, stdin_path, env, capture, out_path)
         after = os.times()
         self.cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
 
@@ -288,17 +289,24 @@ def write_series(series, path):
                 f.write("%s\t%s\t%.4f\t%.4f\t%.4f\t%.4f\t%.2f\n" % (label, s, w, c, rms, mx, mean))
 
 
-def plot(tsv, png, ref_noise):
-    """bench/plot.py with a Python that has matplotlib, else gnuplot, else nothing."""
+def pythons_with(modules):
+    """The Pythons (this one, python3 on PATH, /usr/bin/python3) that can import all of modules."""
+    found = []
     for py in [sys.executable, "python3", "/usr/bin/python3"]:
         exe = shutil.which(py) if not os.path.isabs(py) else py
-        if not exe:
+        if not exe or os.path.realpath(exe) in [os.path.realpath(f) for f in found]:
             continue
-        ok = subprocess.run([exe, "-c", "import matplotlib"], capture_output=True).returncode == 0
-        if ok:
-            r = subprocess.run([exe, os.path.join(HERE, "plot.py"), tsv, png, "%.4f" % ref_noise])
-            if r.returncode == 0:
-                return "matplotlib"
+        if subprocess.run([exe, "-c", "import " + ", ".join(modules)], capture_output=True).returncode == 0:
+            found.append(exe)
+    return found
+
+
+def plot(tsv, png, ref_noise):
+    """bench/plot.py with a Python that has matplotlib, else gnuplot, else nothing."""
+    for exe in pythons_with(["matplotlib"]):
+        r = subprocess.run([exe, os.path.join(HERE, "plot.py"), tsv, png, "%.4f" % ref_noise])
+        if r.returncode == 0:
+            return "matplotlib"
     if shutil.which("gnuplot"):
         r = subprocess.run(["bash", os.path.join(HERE, "plot.gnuplot.sh"), tsv, png])
         if r.returncode == 0:

@@ -1,8 +1,26 @@
 #!/usr/bin/env bash
-# Brume benchmark (make bench): bash bench/run.sh BIN_DIR [bench.py options]; see bench/README.md.
+# Brume benchmark (make bench): bash bench/run.sh BIN_DIR [options]; see bench/README.md.
+# bench.py (rtrace) takes every option but --skip-rpict; rpict.py (pictures) takes --repeat, --threads and
+# --remake-reference, and is left out with --skip-rpict.
 set -euo pipefail
 bin=${1:-build/bin}
 shift || true
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 command -v python3 > /dev/null || { echo "bench: python3 is needed" >&2; exit 1; }
-exec python3 "$here/bench.py" --bin "$bin" "$@"
+skip_rpict=0
+bench_args=()
+rpict_args=()
+while (($#)); do
+    case $1 in
+        --skip-rpict) skip_rpict=1 ;;
+        --remake-reference) bench_args+=("$1"); rpict_args+=("$1") ;;
+        --repeat | --threads) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); shift ;;
+        *) bench_args+=("$1") ;;
+    esac
+    shift
+done
+python3 "$here/bench.py" --bin "$bin" "${bench_args[@]}"
+if ((!skip_rpict)); then
+    echo
+    python3 "$here/rpict.py" --bin "$bin" "${rpict_args[@]}"  # reruns itself in a Python with numpy
+fi
