@@ -89,16 +89,28 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
         bool controlled = closedForm >= 0 && cosL > 0;
         Spectrum f = response(sh, lobes, s->dir, s->pdf * nominal, !controlled);
         if (f.isBlack() && !controlled) continue;
-        Spectrum le = sourceRadiance(light, *s, sh.point);
-        Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
-                                         light, state, ctx);
-        if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
+        Ray shadow{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface};
         float weight = float(1 / (s->pdf * count));
-        sum += f * t * le * weight;
-        if (controlled) {
-            blocked += (Spectrum(1.f) - t) * float(cosL * weight);
-            anyThrough = anyThrough || !t.isBlack();
+        Occlusion seen = occlusion(shadow, s->distance, light);
+        if (seen == Occlusion::Unsure) {
+            Spectrum le = sourceRadiance(light, *s, sh.point);
+            Spectrum t = shadowTransmittance(shadow, light, state, ctx);
+            if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
+            sum += f * t * le * weight;
+            if (controlled) {
+                blocked += (Spectrum(1.f) - t) * float(cosL * weight);
+                anyThrough = anyThrough || !t.isBlack();
+            }
+            continue;
         }
+        // Transmission 1 or 0 in every channel: the same sums as above without a spectrum per ray, and the
+        // source's pattern evaluated only where it is seen.
+        bool clear = seen == Occlusion::Clear;
+        if (ctx.tree && ctx.tree->withShadowRays)
+            recordShadowRay(ctx, sh.point, *s, light, sourceRadiance(light, *s, sh.point) * Spectrum(clear ? 1.f : 0.f));
+        if (clear && !f.isBlack()) sum.addProduct(f, sourceRadiance(light, *s, sh.point), weight);
+        if (controlled && !clear) blocked += float(cosL * weight);
+        anyThrough = anyThrough || (controlled && clear);
     }
     if (closedForm >= 0 && anyThrough) {
         // Every ray blocked means shadow: 0, not the closed form less a noisy estimate of itself (for the
@@ -211,8 +223,10 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                 Spectrum t = transmittance(Ray{sh.point, d, std::numeric_limits<double>::infinity(), surface},
                                            mirror.surface, false, e.kind, crossing, ctx, &onMirror);
                 if (t.isBlack()) continue;
-                t *= shadowTransmittance(Ray{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface},
-                                         light, crossing, ctx);
+                Ray onward{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface};
+                Occlusion seen = occlusion(onward, s->distance - toMirror, light);
+                if (seen == Occlusion::Blocked) continue;
+                if (seen == Occlusion::Unsure) t *= shadowTransmittance(onward, light, crossing, ctx);
                 if (!t.isBlack())
                     sum += f * sourceRadiance(light, *s, image) * mirror.reflectance * t * float(1 / (s->pdf * count));
             }
@@ -221,9 +235,16 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
     return sum;
 }
 
+// Whether a shadow ray reaches the source's sample at `distance`, as far as Embree's occlusion query tells
+// (most shadow rays meet nothing, or an opaque surface): Unsure leaves it to shadowTransmittance.
+Occlusion Integrator::occlusion(const Ray& ray, double distance, const Light& light) const {
+    Occlusion seen = scene_.geometry().occlusion(ray, light.surface(), distance, scene_);
+    return seen == Occlusion::Blocked && !scene_.blockersDecide() ? Occlusion::Unsure : seen;
+}
+
 // What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
 // clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
-Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const {
+Spectrum Integrator::shadowTransmittance(const Ray& ray, const Light& light, PathState state, Context& ctx) const {
     return transmittance(ray, light.surface(), light.isDistant(), light.emitter().kind, state, ctx, nullptr);
 }
 

@@ -109,7 +109,8 @@ private:
     void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
                          const Spectrum& value) const;
     bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
-    Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const;
+    Occlusion occlusion(const Ray& ray, double distance, const Light& light) const;
+    Spectrum shadowTransmittance(const Ray& ray, const Light& light, PathState state, Context& ctx) const;
     Spectrum transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
                            PathState& state, Context& ctx, SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;

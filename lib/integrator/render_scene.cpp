@@ -31,6 +31,27 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
         objectFrames_.push_back({p.patternTransform, p.patternTransform.inverse()});
     addSources();
     addMirrors();
+    findShadowBlockers();
+}
+
+// Which modifiers make their surfaces stop shadow rays, as the shadow-ray walk (Integrator::transmittance)
+// judges them: not patterned, mixed or cut away, and neither passing light (glass, trans, dielectric, void
+// materials) nor an illum, whose effect depends on the source behind it.
+void RenderScene::findShadowBlockers() {
+    std::vector<bool> cutAway(scene_.objects.size(), false);
+    for (const auto& [antimatter, cut] : antimatter_)
+        for (int modifier : cut) cutAway[modifier] = true;
+    blocksShadows_.assign(scene_.objects.size(), false);
+    for (int i = 0; i < int(scene_.objects.size()); ++i) {
+        const std::string& type = scene_.objects[i].type;
+        if (type == "dielectric" || isPatternType(type) || isMixtureType(type)) blockersDecide_ = false;
+        int material = modifiers_->fixedMaterial(i);
+        if (modifiers_->varies(i) || material < 0 || cutAway[material] || clippedModifiers(material)) continue;
+        if (const Emitter* e = emitters_[material].get())
+            blocksShadows_[i] = e->kind != Emitter::Kind::Illum;
+        else
+            blocksShadows_[i] = materials_[material] && !materials_[material]->passesShadows();
+    }
 }
 
 void RenderScene::checkTypes() const {
