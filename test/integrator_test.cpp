@@ -162,4 +162,7 @@ TEST(RenderScene, OnlyPlainlyOpaqueSurfacesBlockShadowRaysOutright) {
     EXPECT_FALSE(patterned.render.blocksShadows(SurfaceId{9}));
     EXPECT_FALSE(patterned.render.blockersDecide());
     EXPECT_FALSE(TestScene(text + "void dielectric water 0 0 5 .9 .9 .9 1.33 0\n").render.blockersDecide());
+    // A patterned sky is no surface a shadow ray crosses.
+    EXPECT_TRUE(TestScene(text + "void brightfunc skyfunc 2 Dx . 0 0\nskyfunc glow skyglow 0 0 4 1 1 1 0\n"
+                                 "skyglow source sky 0 0 4 0 0 1 180\n").render.blockersDecide());
 }

@@ -33,6 +33,8 @@ struct SurfaceHit {
 class ShadowBlockers {
 public:
     virtual bool blocksShadows(const SurfaceId& id) const = 0;
+    // Whether a blocker met anywhere on a shadow ray blocks it, whatever else lies before it.
+    virtual bool blockersDecide() const = 0;
 
 protected:
     ~ShadowBlockers() = default;

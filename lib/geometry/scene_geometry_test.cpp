@@ -126,7 +126,9 @@ namespace {
 // Every surface blocks shadow rays but the one named.
 struct AllBlockBut : ShadowBlockers {
     int passing = -1;
+    bool decide = true;
     bool blocksShadows(const SurfaceId& id) const override { return id.surface != passing; }
+    bool blockersDecide() const override { return decide; }
 };
 
 }  // namespace
@@ -150,5 +152,12 @@ TEST(SceneGeometry, OcclusionJudgesWhatLiesBeforeTheTarget) {
         // Past the post, a blocker, to a target beyond it.
         Ray across{dvec3(0.5, 0.8, 0) * k, glm::normalize(dvec3(1, 0, 0.1)), std::numeric_limits<double>::infinity(), floor};
         EXPECT_EQ(g.occlusion(across, ball, 0.5 * k, blockers), Occlusion::Blocked) << k;
+        // Through the ball, which passes light, to the post behind it: blocked, unless what lies before a
+        // blocker may matter.
+        Ray through{dvec3(0.2, 0.2, 0.5) * k, glm::normalize(dvec3(1, 1, 0))};
+        EXPECT_EQ(g.occlusion(through, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Blocked);
+        blockers.decide = false;
+        EXPECT_EQ(g.occlusion(through, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Unsure);
+        EXPECT_EQ(g.occlusion(across, ball, 0.5 * k, blockers), Occlusion::Unsure) << k;
     }
 }

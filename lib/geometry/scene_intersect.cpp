@@ -16,15 +16,18 @@ struct ShadowQuery {
     const ShadowBlockers* blockers;
     SurfaceId target;
     double sureEnd;  // candidates beyond are within rounding of the target, in either order
-    bool unsure = false;
+    bool unsure = false;   // the query ended on a candidate only the walk can judge
+    bool crossed = false;  // it passed surfaces that may let light through
 
-    // Whether a candidate at distance t may end the query (all but the target near its end), noting those
-    // only the walk can judge.
+    // Whether a candidate at distance t ends the query. The target near its end is no obstacle; surfaces that
+    // may pass light are looked past for a blocker behind them, where a blocker decides.
     bool ends(const SurfaceId& id, double t) {
         bool nearEnd = t >= sureEnd;
         if (id == target && nearEnd) return false;
-        if (nearEnd || id == target || !blockers->blocksShadows(id)) unsure = true;
-        return true;
+        if (!nearEnd && id != target && blockers->blocksShadows(id)) return true;
+        bool lookPast = !nearEnd && id != target && blockers->blockersDecide();
+        (lookPast ? crossed : unsure) = true;
+        return !lookPast;
     }
 };
 
@@ -254,8 +257,8 @@ Occlusion SceneGeometry::occlusion(const Ray& ray, const SurfaceId& target, doub
     RTCRay r{};
     if (!toEmbree(shadow, r)) return Occlusion::Unsure;
     rtcOccluded1(groups_[0].scene, &ctx.rtc, &r);
-    if (r.tfar >= 0) return Occlusion::Clear;
-    return query.unsure ? Occlusion::Unsure : Occlusion::Blocked;
+    if (r.tfar >= 0) return query.crossed ? Occlusion::Unsure : Occlusion::Clear;
+    return query.unsure || !blockers.blockersDecide() ? Occlusion::Unsure : Occlusion::Blocked;
 }
 
 // Radiance's mesh shading: the vertex normals and (u, v) interpolated at the hit by its barycentric weights;

@@ -78,12 +78,15 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
     int nominal = light.sampleCount(sh.point, subdivision(state), state.weight);
     int count = thresholdedCount(nominal, share);
     uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    if (e.radiance.isBlack()) return sum;
     LightView view = light.view(sh.point);
+    Spectrum scratch;  // the radiance of patterned and focused sources (see sourceRadiance)
+    bool record = ctx.tree && ctx.tree->withShadowRays;
     for (int k = 0; k < count; ++k) {
         double u, v;
         sobol2D(k, scramble, u, v);
         auto s = light.sample(view, u, v);
-        if (!s || s->radiance.isBlack()) continue;
+        if (!s) continue;
         if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
         double cosL = glm::dot(sh.normal, s->dir);
         bool controlled = closedForm >= 0 && cosL > 0;
@@ -91,12 +94,12 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
         if (f.isBlack() && !controlled) continue;
         Ray shadow{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface};
         float weight = float(1 / (s->pdf * count));
-        Occlusion seen = occlusion(shadow, s->distance, light);
+        Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), s->distance, scene_);
         if (seen == Occlusion::Unsure) {
-            Spectrum le = sourceRadiance(light, *s, sh.point);
+            const Spectrum& le = sourceRadiance(light, *s, sh.point, scratch);
             Spectrum t = shadowTransmittance(shadow, light, state, ctx);
-            if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
-            sum += f * t * le * weight;
+            if (record) recordShadowRay(ctx, sh.point, *s, light, le * t);
+            sum.addProduct(f * t, le, weight);
             if (controlled) {
                 blocked += (Spectrum(1.f) - t) * float(cosL * weight);
                 anyThrough = anyThrough || !t.isBlack();
@@ -106,9 +109,8 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
         // Transmission 1 or 0 in every channel: the same sums as above without a spectrum per ray, and the
         // source's pattern evaluated only where it is seen.
         bool clear = seen == Occlusion::Clear;
-        if (ctx.tree && ctx.tree->withShadowRays)
-            recordShadowRay(ctx, sh.point, *s, light, sourceRadiance(light, *s, sh.point) * Spectrum(clear ? 1.f : 0.f));
-        if (clear && !f.isBlack()) sum.addProduct(f, sourceRadiance(light, *s, sh.point), weight);
+        if (record) recordShadowRay(ctx, sh.point, *s, light, sourceRadiance(light, *s, sh.point, scratch) * float(clear));
+        if (clear && !f.isBlack()) sum.addProduct(f, sourceRadiance(light, *s, sh.point, scratch), weight);
         if (controlled && !clear) blocked += float(cosL * weight);
         anyThrough = anyThrough || (controlled && clear);
     }
@@ -155,18 +157,22 @@ Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3
     return f;
 }
 
-// The radiance a source sample sends toward `from`, with Radiance's spotlight focus (a spotlight acts as if
-// it were its focal distance farther behind its surface) and the source's pattern.
-Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s, const dvec3& from) const {
+// The radiance a source sample sends toward `from`: the emitter's own, or, with Radiance's spotlight focus (a
+// spotlight acts as if it were its focal distance farther behind its surface) and the source's pattern,
+// `scratch` made so, without a spectrum per sample.
+const Spectrum& Integrator::sourceRadiance(const Light& light, const LightSample& s, const dvec3& from,
+                                           Spectrum& scratch) const {
     const Emitter& e = light.emitter();
-    Spectrum le = s.radiance;
     bool finite = std::isfinite(s.distance);
-    if (e.kind == Emitter::Kind::Spotlight && finite)
-        le *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
+    bool focused = e.kind == Emitter::Kind::Spotlight && finite;
+    if (!focused && !light.patterned()) return e.radiance;
+    scratch = e.radiance;
+    if (focused)
+        scratch *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
     if (light.patterned())
-        le *= sourcePattern(light, finite ? from + s.distance * s.dir : from, s.normal, s.dir,
-                            finite ? s.distance : kDistantSourceDistance);
-    return le;
+        scratch *= sourcePattern(light, finite ? from + s.distance * s.dir : from, s.normal, s.dir,
+                                 finite ? s.distance : kDistantSourceDistance);
+    return scratch;
 }
 
 // The colour of a source's patterns where a ray in direction `dir` meets it (e.g. a luminaire's intensity
@@ -195,6 +201,7 @@ void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSam
 Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
                                       const PathState& state, Context& ctx) const {
     Spectrum sum(0.f);
+    Spectrum scratch;
     for (const PlanarMirror& mirror : scene_.planarMirrors()) {
         double height = glm::dot(mirror.normal, sh.point) - mirror.offset;
         if (mirror.surface == surface || height <= 0) continue;  // mirrors reflect from their front only
@@ -212,7 +219,7 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                 double u, v;
                 sobol2D(k, scramble, u, v);
                 auto s = light.sample(view, u, v);
-                if (!s || s->radiance.isBlack()) continue;
+                if (!s || e.radiance.isBlack()) continue;
                 dvec3 d = s->dir - 2 * glm::dot(s->dir, mirror.normal) * mirror.normal;  // toward the image
                 double toMirror = -height / glm::dot(mirror.normal, d);
                 if (!(toMirror > 0) || toMirror >= s->distance) continue;
@@ -224,22 +231,15 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                                            mirror.surface, false, e.kind, crossing, ctx, &onMirror);
                 if (t.isBlack()) continue;
                 Ray onward{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface};
-                Occlusion seen = occlusion(onward, s->distance - toMirror, light);
+                Occlusion seen = scene_.geometry().occlusion(onward, light.surface(), s->distance - toMirror, scene_);
                 if (seen == Occlusion::Blocked) continue;
                 if (seen == Occlusion::Unsure) t *= shadowTransmittance(onward, light, crossing, ctx);
                 if (!t.isBlack())
-                    sum += f * sourceRadiance(light, *s, image) * mirror.reflectance * t * float(1 / (s->pdf * count));
+                    sum += f * sourceRadiance(light, *s, image, scratch) * mirror.reflectance * t * float(1 / (s->pdf * count));
             }
         }
     }
     return sum;
-}
-
-// Whether a shadow ray reaches the source's sample at `distance`, as far as Embree's occlusion query tells
-// (most shadow rays meet nothing, or an opaque surface): Unsure leaves it to shadowTransmittance.
-Occlusion Integrator::occlusion(const Ray& ray, double distance, const Light& light) const {
-    Occlusion seen = scene_.geometry().occlusion(ray, light.surface(), distance, scene_);
-    return seen == Occlusion::Blocked && !scene_.blockersDecide() ? Occlusion::Unsure : seen;
 }
 
 // What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and

@@ -1,5 +1,6 @@
 #include "integrator/render_scene.h"
 
+#include <algorithm>
 #include <numbers>
 #include <set>
 
@@ -41,10 +42,10 @@ void RenderScene::findShadowBlockers() {
     std::vector<bool> cutAway(scene_.objects.size(), false);
     for (const auto& [antimatter, cut] : antimatter_)
         for (int modifier : cut) cutAway[modifier] = true;
+    blockersDecide_ = !anyVaryingSurface();
     blocksShadows_.assign(scene_.objects.size(), false);
     for (int i = 0; i < int(scene_.objects.size()); ++i) {
-        const std::string& type = scene_.objects[i].type;
-        if (type == "dielectric" || isPatternType(type) || isMixtureType(type)) blockersDecide_ = false;
+        if (scene_.objects[i].type == "dielectric") blockersDecide_ = false;
         int material = modifiers_->fixedMaterial(i);
         if (modifiers_->varies(i) || material < 0 || cutAway[material] || clippedModifiers(material)) continue;
         if (const Emitter* e = emitters_[material].get())
@@ -52,6 +53,19 @@ void RenderScene::findShadowBlockers() {
         else
             blocksShadows_[i] = materials_[material] && !materials_[material]->passesShadows();
     }
+}
+
+// Whether patterns or mixtures modify any surface a ray can meet (those on sources at infinity, skies, it
+// never meets): surfaces, instances and meshes, and the triangles of meshes.
+bool RenderScene::anyVaryingSurface() const {
+    for (const SceneObject& o : scene_.objects)
+        if ((isSurfaceType(o.type) || o.type == "instance" || o.type == "mesh") && modifiers_->varies(o.modifier))
+            return true;
+    for (const Prototype& p : geometry_->prototypes())
+        if (p.mesh && std::any_of(p.mesh->materials.begin(), p.mesh->materials.end(),
+                                  [&](int m) { return modifiers_->varies(m); }))
+            return true;
+    return false;
 }
 
 void RenderScene::checkTypes() const {

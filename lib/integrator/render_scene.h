@@ -74,8 +74,8 @@ public:
     }
     // Whether a blocking surface met anywhere on a shadow ray (in whatever order Embree finds it) decides it:
     // no surface can bend a shadow ray away from it (dielectric), nor draw random numbers where a shadow ray
-    // crosses it before (patterns, mixtures), which would change the samples that follow.
-    bool blockersDecide() const { return blockersDecide_; }
+    // crosses it before (patterned or mixed surfaces), which would change the samples that follow.
+    bool blockersDecide() const override { return blockersDecide_; }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
 
@@ -87,6 +87,7 @@ private:
     void addAntimatter();
     void addMirrors();
     void findShadowBlockers();
+    bool anyVaryingSurface() const;
 
     const Scene& scene_;
     std::unique_ptr<ModifierChain> modifiers_;
