@@ -231,7 +231,10 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                                            mirror.surface, false, e.kind, crossing, ctx, &onMirror);
                 if (t.isBlack()) continue;
                 Ray onward{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface};
-                Occlusion seen = scene_.geometry().occlusion(onward, light.surface(), s->distance - toMirror, scene_);
+                // The source's sample lies along the onward ray only if the way to the mirror went straight.
+                Occlusion seen = scene_.shadowsBend() ? Occlusion::Unsure
+                                                      : scene_.geometry().occlusion(onward, light.surface(),
+                                                                                    s->distance - toMirror, scene_);
                 if (seen == Occlusion::Blocked) continue;
                 if (seen == Occlusion::Unsure) t *= shadowTransmittance(onward, light, crossing, ctx);
                 if (!t.isBlack())

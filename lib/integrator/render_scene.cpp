@@ -42,10 +42,9 @@ void RenderScene::findShadowBlockers() {
     std::vector<bool> cutAway(scene_.objects.size(), false);
     for (const auto& [antimatter, cut] : antimatter_)
         for (int modifier : cut) cutAway[modifier] = true;
-    blockersDecide_ = !anyVaryingSurface();
     blocksShadows_.assign(scene_.objects.size(), false);
     for (int i = 0; i < int(scene_.objects.size()); ++i) {
-        if (scene_.objects[i].type == "dielectric") blockersDecide_ = false;
+        shadowsBend_ = shadowsBend_ || scene_.objects[i].type == "dielectric";
         int material = modifiers_->fixedMaterial(i);
         if (modifiers_->varies(i) || material < 0 || cutAway[material] || clippedModifiers(material)) continue;
         if (const Emitter* e = emitters_[material].get())
@@ -53,6 +52,7 @@ void RenderScene::findShadowBlockers() {
         else
             blocksShadows_[i] = materials_[material] && !materials_[material]->passesShadows();
     }
+    blockersDecide_ = !shadowsBend_ && !anyVaryingSurface();
 }
 
 // Whether patterns or mixtures modify any surface a ray can meet (those on sources at infinity, skies, it

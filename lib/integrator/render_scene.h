@@ -76,6 +76,8 @@ public:
     // no surface can bend a shadow ray away from it (dielectric), nor draw random numbers where a shadow ray
     // crosses it before (patterned or mixed surfaces), which would change the samples that follow.
     bool blockersDecide() const override { return blockersDecide_; }
+    // Whether shadow rays may change direction where they cross a surface (dielectrics refract them).
+    bool shadowsBend() const { return shadowsBend_; }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
 
@@ -106,6 +108,7 @@ private:
     std::vector<int> surfaceMirror_;  // index in mirrors_, or -1
     std::vector<bool> blocksShadows_;  // per modifier object
     bool blockersDecide_ = true;
+    bool shadowsBend_ = false;
 };
 
 }  // namespace brume

@@ -215,7 +215,8 @@ namespace {
 // ½ Σ γᵢ n·(rᵢ × rᵢ₊₁)/|rᵢ × rᵢ₊₁|, γᵢ the angle its edge i subtends; the polygon is first clipped to the
 // point's upper half-space.
 double lambertPolygon(const std::vector<dvec3>& vertices, const dvec3& p, const dvec3& n) {
-    std::vector<dvec3> clipped;
+    thread_local std::vector<dvec3> clipped;  // a scratch per thread: every shading point asks, for every source
+    clipped.clear();
     for (size_t i = 0; i < vertices.size(); ++i) {
         dvec3 a = vertices[i] - p, b = vertices[(i + 1) % vertices.size()] - p;
         double ha = glm::dot(a, n), hb = glm::dot(b, n);
