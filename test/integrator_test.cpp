@@ -116,6 +116,25 @@ TEST(Integrator, MirrorImagesOfSourcesLightSurfacesWithoutBounces) {
     EXPECT_NEAR(meanIrradiance(without, dvec3(3, 0, 0), dvec3(0, 0, 1), 8), lampOnly, 0.005 * lampOnly);
 }
 
+// A shadow ray to a source's mirror image goes to the mirror and on in the image ray's direction; a dielectric
+// slab on the way to the mirror shifts it sideways, so here it goes on past the small lamp into the ceiling:
+// no light. (The lamp's direct light is stopped by a plate.)
+TEST(Integrator, ShadowRaysShiftedOnTheWayToAMirrorMissTheImage) {
+    const std::string room = "void light lum 0 0 3 100 100 100\n"
+                             "lum polygon lamp 0 0 12 -.05 -.05 2 -.05 .05 2 .05 .05 2 .05 -.05 2\n"
+                             "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                             "grey polygon ceiling 0 0 12 -5 -5 2.01 -5 5 2.01 5 5 2.01 5 -5 2.01\n"
+                             "grey polygon plate 0 0 12 -.5 -.5 1 -.5 .5 1 .5 .5 1 .5 -.5 1\n"
+                             "void mirror silver 0 0 3 .8 .8 .8\n"
+                             "silver polygon wall 0 0 12 1 -1 0 1 -1 3 1 1 3 1 1 0\n";
+    TestScene bare(room);
+    EXPECT_GT(Integrator(bare.render, fixedSeed()).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    TestScene slab(room + "void dielectric crown 0 0 5 1 1 1 1.5 0\n"
+                          "crown polygon near 0 0 12 .3 -5 -1 .3 -5 .9 .3 5 .9 .3 5 -1\n"
+                          "crown polygon far 0 0 12 .8 -5 -1 .8 5 -1 .8 5 .9 .8 -5 .9\n");
+    EXPECT_EQ(Integrator(slab.render, fixedSeed()).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+}
+
 // With -ab, paths that reach the lamp through the mirror are counted once: by its image when -dr is on,
 // by the paths themselves when it is off. Tolerance 3%: the -dr 0 estimate rests on rare path hits.
 TEST(Integrator, PathsThroughMirrorsAreCountedOnceWithOrWithoutImages) {
