@@ -96,7 +96,8 @@ private:
     double exactPlaneHit(const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const;
     void interpolateMesh(const SurfaceId& id, const Ray& local, SurfaceHit& hit) const;
     std::optional<ShapeHit> exactHit(const SurfaceId& id, const Ray& world, float tfar) const;
-    static bool meetsCandidate(const RTCFilterFunctionNArguments* args, unsigned i, SurfaceId& id);
+    bool meetsTriangle(const SurfaceId& id, const Ray& ray) const;
+    static SurfaceId candidate(const RTCFilterFunctionNArguments* args, unsigned i);
     static void filterTriangle(const RTCFilterFunctionNArguments* args);
     static void filterShadowTriangle(const RTCFilterFunctionNArguments* args);
     static void exactBounds(const RTCBoundsFunctionArguments* args);

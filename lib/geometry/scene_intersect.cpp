@@ -120,29 +120,33 @@ Ray SceneGeometry::localRay(const Ray& ray, int placement) const {
     return local;
 }
 
-// Whether the ray meets the triangle of a filter call's candidate i, which belongs to surface `id`.
-bool SceneGeometry::meetsCandidate(const RTCFilterFunctionNArguments* args, unsigned i, SurfaceId& id) {
-    auto* ctx = reinterpret_cast<const TraceContext*>(args->context);
+// The surface of a filter call's candidate triangle i.
+SurfaceId SceneGeometry::candidate(const RTCFilterFunctionNArguments* args, unsigned i) {
     auto* g = static_cast<const Group*>(args->geometryUserPtr);
     int placement = placementOf(RTCHitN_instID(args->hit, args->N, i, 0));
-    id = g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
-    return id != ctx->ray->leaving && !g->owner->hidden(id) && g->owner->meetsFlat(id, *ctx->ray);
+    return g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
+}
+
+// Whether the ray meets the flat surface (or mesh triangle) Embree proposes.
+bool SceneGeometry::meetsTriangle(const SurfaceId& id, const Ray& ray) const {
+    return id != ray.leaving && !hidden(id) && meetsFlat(id, ray);
 }
 
 void SceneGeometry::filterTriangle(const RTCFilterFunctionNArguments* args) {
-    for (unsigned i = 0; i < args->N; ++i) {
-        SurfaceId id;
-        if (args->valid[i] && !meetsCandidate(args, i, id)) args->valid[i] = 0;
-    }
+    auto* ctx = reinterpret_cast<const TraceContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] && !ctx->geometry->meetsTriangle(candidate(args, i), *ctx->ray)) args->valid[i] = 0;
 }
 
-// Occlusion queries: Embree gives the candidate's distance as the ray's tfar.
+// Occlusion queries: Embree gives the candidate's distance as the ray's tfar. Nearly every shadow ray meets its
+// target, which needs no exact test: near the end it is ignored, before it left to the walk.
 void SceneGeometry::filterShadowTriangle(const RTCFilterFunctionNArguments* args) {
-    auto* query = reinterpret_cast<const TraceContext*>(args->context)->shadow;
+    auto* ctx = reinterpret_cast<const TraceContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
-        SurfaceId id;
         if (!args->valid[i]) continue;
-        if (!meetsCandidate(args, i, id) || !query->ends(id, RTCRayN_tfar(args->ray, args->N, i))) args->valid[i] = 0;
+        SurfaceId id = candidate(args, i);
+        bool met = id == ctx->shadow->target || ctx->geometry->meetsTriangle(id, *ctx->ray);
+        if (!met || !ctx->shadow->ends(id, RTCRayN_tfar(args->ray, args->N, i))) args->valid[i] = 0;
     }
 }
 
