@@ -147,6 +147,12 @@ TEST(SceneGeometry, OcclusionJudgesWhatLiesBeforeTheTarget) {
         EXPECT_EQ(g.occlusion(up, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Blocked);
         blockers.passing = 1;
         EXPECT_EQ(g.occlusion(up, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Unsure);
+        // Down onto the floor (triangles): the target at the end is no obstacle; the floor short of the end
+        // blocks, the floor within rounding of it is left to the walk.
+        Ray down{dvec3(0.2, 0.2, 0.9) * k, dvec3(0, 0, -1)};
+        EXPECT_EQ(g.occlusion(down, floor, 0.9 * k, blockers), Occlusion::Clear) << k;
+        EXPECT_EQ(g.occlusion(down, SurfaceId{}, 0.95 * k, blockers), Occlusion::Blocked) << k;
+        EXPECT_EQ(g.occlusion(down, SurfaceId{}, 0.9 * k, blockers), Occlusion::Unsure) << k;
         // Toward a point short of the ball: nothing in the way.
         EXPECT_EQ(g.occlusion(up, SurfaceId{}, 0.25 * k, blockers), Occlusion::Clear) << k;
         // Past the post, a blocker, to a target beyond it.

@@ -19,15 +19,18 @@ struct ShadowQuery {
     bool unsure = false;   // the query ended on a candidate only the walk can judge
     bool crossed = false;  // it passed surfaces that may let light through
 
-    // Whether a candidate at distance t ends the query. The target near its end is no obstacle; surfaces that
-    // may pass light are looked past for a blocker behind them, where a blocker decides.
+    // Whether a candidate at distance t ends the query.
     bool ends(const SurfaceId& id, double t) {
         bool nearEnd = t >= sureEnd;
-        if (id == target && nearEnd) return false;
-        if (!nearEnd && id != target && blockers->blocksShadows(id)) return true;
-        bool lookPast = !nearEnd && id != target && blockers->blockersDecide();
-        (lookPast ? crossed : unsure) = true;
-        return !lookPast;
+        if (id == target && nearEnd) return false;  // the target itself: no obstacle
+        bool before = !nearEnd && id != target;      // surely met before the target
+        if (before && blockers->blocksShadows(id)) return true;
+        if (before && blockers->blockersDecide()) {  // look past it for a blocker, which decides
+            crossed = true;
+            return false;
+        }
+        unsure = true;
+        return true;
     }
 };
 
