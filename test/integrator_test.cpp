@@ -116,6 +116,25 @@ TEST(Integrator, MirrorImagesOfSourcesLightSurfacesWithoutBounces) {
     EXPECT_NEAR(meanIrradiance(without, dvec3(3, 0, 0), dvec3(0, 0, 1), 8), lampOnly, 0.005 * lampOnly);
 }
 
+// A shadow ray to a source's mirror image goes to the mirror and on in the image ray's direction; a dielectric
+// slab on the way to the mirror shifts it sideways, so here it goes on past the small lamp into the ceiling:
+// no light. (The lamp's direct light is stopped by a plate.)
+TEST(Integrator, ShadowRaysShiftedOnTheWayToAMirrorMissTheImage) {
+    const std::string room = "void light lum 0 0 3 100 100 100\n"
+                             "lum polygon lamp 0 0 12 -.05 -.05 2 -.05 .05 2 .05 .05 2 .05 -.05 2\n"
+                             "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                             "grey polygon ceiling 0 0 12 -5 -5 2.01 -5 5 2.01 5 5 2.01 5 -5 2.01\n"
+                             "grey polygon plate 0 0 12 -.5 -.5 1 -.5 .5 1 .5 .5 1 .5 -.5 1\n"
+                             "void mirror silver 0 0 3 .8 .8 .8\n"
+                             "silver polygon wall 0 0 12 1 -1 0 1 -1 3 1 1 3 1 1 0\n";
+    TestScene bare(room);
+    EXPECT_GT(Integrator(bare.render, fixedSeed()).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    TestScene slab(room + "void dielectric crown 0 0 5 1 1 1 1.5 0\n"
+                          "crown polygon near 0 0 12 .3 -5 -1 .3 -5 .9 .3 5 .9 .3 5 -1\n"
+                          "crown polygon far 0 0 12 .8 -5 -1 .8 5 -1 .8 5 .9 .8 -5 .9\n");
+    EXPECT_EQ(Integrator(slab.render, fixedSeed()).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+}
+
 // With -ab, paths that reach the lamp through the mirror are counted once: by its image when -dr is on,
 // by the paths themselves when it is off. Tolerance 3%: the -dr 0 estimate rests on rare path hits.
 TEST(Integrator, PathsThroughMirrorsAreCountedOnceWithOrWithoutImages) {
@@ -130,4 +149,39 @@ TEST(Integrator, PathsThroughMirrorsAreCountedOnceWithOrWithoutImages) {
     double b = meanIrradiance(without, dvec3(3, 0, 0), dvec3(0, 0, 1), 8);
     EXPECT_NEAR(a, lampAndImage(), 0.005 * lampAndImage());
     EXPECT_NEAR(b, a, 0.03 * a);
+}
+
+// Shadow rays skip the surface-by-surface walk only at surfaces that stop every one of them; anything that
+// passes light, depends on the source, is cut away or varies from hit to hit is left to the walk.
+TEST(RenderScene, OnlyPlainlyOpaqueSurfacesBlockShadowRaysOutright) {
+    const char* types[] = {"void plastic grey 0 0 5 .5 .5 .5 0 0",
+                           "void glass clear 0 0 3 .9 .9 .9",
+                           "void trans sheer 0 0 7 .5 .5 .5 0 0 .5 1",    // pure specular transmission
+                           "void trans frosted 0 0 7 .5 .5 .5 0 .1 .5 1",  // rough: blocks shadow rays
+                           "void illum window 1 grey 0 3 1 1 1",
+                           "void light lamp 0 0 3 10 10 10",
+                           "void plastic cutaway 0 0 5 .5 .5 .5 0 0",
+                           "void antimatter hole 1 cutaway 0 0",
+                           "void mirror silver 0 0 3 .8 .8 .8"};
+    std::string text;
+    for (const char* t : types) text += std::string(t) + "\n";
+    const char* surfaces[] = {"grey", "clear", "sheer", "frosted", "window", "lamp", "cutaway", "hole", "silver"};
+    const bool blocks[] = {true, false, false, true, false, true, false, false, true};
+    for (int i = 0; i < 9; ++i) {
+        std::string z = std::to_string(i + 1);
+        text += std::string(surfaces[i]) + " polygon p" + z + " 0 0 12 0 0 " + z + " 1 0 " + z + " 1 1 " + z + " 0 1 " + z + "\n";
+    }
+    TestScene plain(text);
+    for (int i = 0; i < 9; ++i) EXPECT_EQ(plain.render.blocksShadows(SurfaceId{i}), blocks[i]) << surfaces[i];
+    EXPECT_TRUE(plain.render.blockersDecide());
+    // Patterns draw a random number where the walk crosses them, dielectrics bend it: then only the walk
+    // knows whether what lies before a blocker matters.
+    TestScene patterned(text + "void brightfunc dots 2 Dx . 0 0\ndots plastic dotted 0 0 5 .5 .5 .5 0 0\n"
+                               "dotted polygon p10 0 0 12 0 0 10 1 0 10 1 1 10 0 1 10\n");
+    EXPECT_FALSE(patterned.render.blocksShadows(SurfaceId{9}));
+    EXPECT_FALSE(patterned.render.blockersDecide());
+    EXPECT_FALSE(TestScene(text + "void dielectric water 0 0 5 .9 .9 .9 1.33 0\n").render.blockersDecide());
+    // A patterned sky is no surface a shadow ray crosses.
+    EXPECT_TRUE(TestScene(text + "void brightfunc skyfunc 2 Dx . 0 0\nskyfunc glow skyglow 0 0 4 1 1 1 0\n"
+                                 "skyglow source sky 0 0 4 0 0 1 180\n").render.blockersDecide());
 }

@@ -137,6 +137,7 @@ void SceneGeometry::addPolygons(Group& g) {
     RTCGeometry geom = newTriangles(device_, vertices, indices.data(), indices.size() / 3, false);
     rtcSetGeometryUserData(geom, &g);
     rtcSetGeometryIntersectFilterFunction(geom, filterTriangle);
+    rtcSetGeometryOccludedFilterFunction(geom, filterShadowTriangle);
     attach(g.scene, geom, kTrianglesGeom);
 }
 
@@ -146,6 +147,7 @@ void SceneGeometry::addMeshTriangles(Group& g) {
     RTCGeometry geom = newTriangles(device_, m.vertices, m.triangles.front().data(), m.triangles.size(), true);
     rtcSetGeometryUserData(geom, &g);
     rtcSetGeometryIntersectFilterFunction(geom, filterTriangle);
+    rtcSetGeometryOccludedFilterFunction(geom, filterShadowTriangle);
     attach(g.scene, geom, kTrianglesGeom);
     for (const dvec3& v : m.vertices) g.lo = glm::min(g.lo, v), g.hi = glm::max(g.hi, v);
 }
@@ -159,6 +161,7 @@ void SceneGeometry::addExactShapes(Group& g) {
     rtcSetGeometryUserData(geom, &g);
     rtcSetGeometryBoundsFunction(geom, exactBounds, &g);
     rtcSetGeometryIntersectFunction(geom, exactIntersect);
+    rtcSetGeometryOccludedFunction(geom, exactOccluded);
     attach(g.scene, geom, kExactGeom);
 }
 

@@ -28,6 +28,22 @@ struct SurfaceHit {
     glm::dvec2 uv{0};
 };
 
+// The caller's judgement of which surfaces surely stop a shadow ray (opaque materials, other sources): a
+// shadow ray that meets one before anything that might pass or bend light is blocked.
+class ShadowBlockers {
+public:
+    virtual bool blocksShadows(const SurfaceId& id) const = 0;
+    // Whether a blocker met anywhere on a shadow ray blocks it, whatever else lies before it.
+    virtual bool blockersDecide() const = 0;
+
+protected:
+    ~ShadowBlockers() = default;
+};
+
+// What a shadow ray meets on its way to its target: nothing, a surface that surely blocks it, or something
+// only a walk surface by surface can judge (glass, trans, antimatter, patterns, the target itself...).
+enum class Occlusion { Clear, Blocked, Unsure };
+
 class SceneGeometry {
 public:
     // A scene with no instances or meshes.
@@ -39,6 +55,11 @@ public:
 
     // The nearest surface along the ray before ray.tmax, never the ray.leaving surface at its origin.
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
+
+    // Whether a shadow ray from ray.org along ray.dir reaches surface `target` at `distance` (infinity: it
+    // leaves the scene), by Embree's occlusion query: no nearest hit, no exact hit point. Only surfaces before
+    // the target count; those within rounding of it are Unsure, so that the walk decides as it always did.
+    Occlusion occlusion(const Ray& ray, const SurfaceId& target, double distance, const ShadowBlockers& blockers) const;
 
     // The scene's own surfaces come first (ownSurfaces() of them), then those of octree prototypes.
     const std::vector<Surface>& surfaces() const { return layout_.surfaces; }
@@ -74,9 +95,14 @@ private:
     Ray localRay(const Ray& ray, int placement) const;
     double exactPlaneHit(const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const;
     void interpolateMesh(const SurfaceId& id, const Ray& local, SurfaceHit& hit) const;
+    std::optional<ShapeHit> exactHit(const SurfaceId& id, const Ray& world, float tfar) const;
+    bool meetsTriangle(const SurfaceId& id, const Ray& ray) const;
+    static SurfaceId candidate(const RTCFilterFunctionNArguments* args, unsigned i);
     static void filterTriangle(const RTCFilterFunctionNArguments* args);
+    static void filterShadowTriangle(const RTCFilterFunctionNArguments* args);
     static void exactBounds(const RTCBoundsFunctionArguments* args);
     static void exactIntersect(const RTCIntersectFunctionNArguments* args);
+    static void exactOccluded(const RTCOccludedFunctionNArguments* args);
 
     SceneLayout layout_;
     std::vector<Group> groups_;  // [0]: the scene's own surfaces and the placements; [1 + k]: prototype k

@@ -120,3 +120,50 @@ TEST(SceneGeometry, NegativeRadiiTurnSurfacesInsideOutAsRadiance) {
     Scene bad;
     EXPECT_THROW(surfacesOf("void plastic p 0 0 5 .5 .5 .5 0 0\np cone d 0 0 8 0 0 0 0 0 1 -1 1\n", bad), Error);
 }
+
+namespace {
+
+// Every surface blocks shadow rays but the one named.
+struct AllBlockBut : ShadowBlockers {
+    int passing = -1;
+    bool decide = true;
+    bool blocksShadows(const SurfaceId& id) const override { return id.surface != passing; }
+    bool blockersDecide() const override { return decide; }
+};
+
+}  // namespace
+
+// Occlusion queries see only what lies before the target: the target itself near its end is no obstacle,
+// anything the caller does not call a blocker, or the target met early, leaves the answer to the walk.
+TEST(SceneGeometry, OcclusionJudgesWhatLiesBeforeTheTarget) {
+    for (double k : {1e-6, 1.0, 1e6}) {
+        Scene scene;
+        SceneGeometry g(surfacesOf(box(k), scene));
+        const SurfaceId floor{0}, ball{1};
+        AllBlockBut blockers;
+        Ray up{dvec3(0.5, 0.5, 0) * k, dvec3(0, 0, 1), std::numeric_limits<double>::infinity(), floor};
+        EXPECT_EQ(g.occlusion(up, ball, 0.3 * k, blockers), Occlusion::Clear) << k;
+        EXPECT_EQ(g.occlusion(up, ball, 0.7 * k, blockers), Occlusion::Unsure) << k;  // the ball met early
+        EXPECT_EQ(g.occlusion(up, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Blocked);
+        blockers.passing = 1;
+        EXPECT_EQ(g.occlusion(up, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Unsure);
+        // Down onto the floor (triangles): the target at the end is no obstacle; the floor short of the end
+        // blocks, the floor within rounding of it is left to the walk.
+        Ray down{dvec3(0.2, 0.2, 0.9) * k, dvec3(0, 0, -1)};
+        EXPECT_EQ(g.occlusion(down, floor, 0.9 * k, blockers), Occlusion::Clear) << k;
+        EXPECT_EQ(g.occlusion(down, SurfaceId{}, 0.95 * k, blockers), Occlusion::Blocked) << k;
+        EXPECT_EQ(g.occlusion(down, SurfaceId{}, 0.9 * k, blockers), Occlusion::Unsure) << k;
+        // Toward a point short of the ball: nothing in the way.
+        EXPECT_EQ(g.occlusion(up, SurfaceId{}, 0.25 * k, blockers), Occlusion::Clear) << k;
+        // Past the post, a blocker, to a target beyond it.
+        Ray across{dvec3(0.5, 0.8, 0) * k, glm::normalize(dvec3(1, 0, 0.1)), std::numeric_limits<double>::infinity(), floor};
+        EXPECT_EQ(g.occlusion(across, ball, 0.5 * k, blockers), Occlusion::Blocked) << k;
+        // Through the ball, which passes light, to the post behind it: blocked, unless what lies before a
+        // blocker may matter.
+        Ray through{dvec3(0.2, 0.2, 0.5) * k, glm::normalize(dvec3(1, 1, 0))};
+        EXPECT_EQ(g.occlusion(through, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Blocked);
+        blockers.decide = false;
+        EXPECT_EQ(g.occlusion(through, SurfaceId{}, std::numeric_limits<double>::infinity(), blockers), Occlusion::Unsure);
+        EXPECT_EQ(g.occlusion(across, ball, 0.5 * k, blockers), Occlusion::Unsure) << k;
+    }
+}

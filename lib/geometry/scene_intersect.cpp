@@ -11,6 +11,29 @@ using namespace scene_geometry_detail;
 
 namespace {
 
+// An occlusion query's question and what its candidates tell.
+struct ShadowQuery {
+    const ShadowBlockers* blockers;
+    SurfaceId target;
+    double sureEnd;  // candidates beyond are within rounding of the target, in either order
+    bool unsure = false;   // the query ended on a candidate only the walk can judge
+    bool crossed = false;  // it passed surfaces that may let light through
+
+    // Whether a candidate at distance t ends the query.
+    bool ends(const SurfaceId& id, double t) {
+        bool nearEnd = t >= sureEnd;
+        if (id == target && nearEnd) return false;  // the target itself: no obstacle
+        bool before = !nearEnd && id != target;      // surely met before the target
+        if (before && blockers->blocksShadows(id)) return true;
+        if (before && blockers->blockersDecide()) {  // look past it for a blocker, which decides
+            crossed = true;
+            return false;
+        }
+        unsure = true;
+        return true;
+    }
+};
+
 // Embree's per-query context, extended with the exact ray and the exact hit of our own shapes.
 struct TraceContext {
     RTCIntersectContext rtc;
@@ -18,7 +41,22 @@ struct TraceContext {
     const Ray* ray;  // in world coordinates
     double exactT;
     dvec3 exactNormal;  // in the coordinates of the shape's prototype
+    ShadowQuery* shadow = nullptr;  // occlusion queries only
 };
+
+// The ray in Embree's single precision; false where Embree cannot trace it: it traces only within ±1.8e18
+// (its FLT_LARGE).
+bool toEmbree(const Ray& ray, RTCRay& r) {
+    r.org_x = float(ray.org.x), r.org_y = float(ray.org.y), r.org_z = float(ray.org.z);
+    r.dir_x = float(ray.dir.x), r.dir_y = float(ray.dir.y), r.dir_z = float(ray.dir.z);
+    r.tnear = float(ray.tmin);
+    r.tfar = ray.tmax > 3e38 ? std::numeric_limits<float>::infinity() : float(ray.tmax);
+    r.mask = ~0u;
+    r.time = 0, r.id = 0, r.flags = 0;
+    for (float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z, r.tnear})
+        if (!(std::abs(v) <= 1.8e18f)) return false;
+    return true;
+}
 
 }  // namespace
 
@@ -85,15 +123,33 @@ Ray SceneGeometry::localRay(const Ray& ray, int placement) const {
     return local;
 }
 
+// The surface of a filter call's candidate triangle i.
+SurfaceId SceneGeometry::candidate(const RTCFilterFunctionNArguments* args, unsigned i) {
+    auto* g = static_cast<const Group*>(args->geometryUserPtr);
+    int placement = placementOf(RTCHitN_instID(args->hit, args->N, i, 0));
+    return g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
+}
+
+// Whether the ray meets the flat surface (or mesh triangle) Embree proposes.
+bool SceneGeometry::meetsTriangle(const SurfaceId& id, const Ray& ray) const {
+    return id != ray.leaving && !hidden(id) && meetsFlat(id, ray);
+}
+
 void SceneGeometry::filterTriangle(const RTCFilterFunctionNArguments* args) {
     auto* ctx = reinterpret_cast<const TraceContext*>(args->context);
-    auto* g = static_cast<const Group*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] && !ctx->geometry->meetsTriangle(candidate(args, i), *ctx->ray)) args->valid[i] = 0;
+}
+
+// Occlusion queries: Embree gives the candidate's distance as the ray's tfar. Nearly every shadow ray meets its
+// target, which needs no exact test: near the end it is ignored, before it left to the walk.
+void SceneGeometry::filterShadowTriangle(const RTCFilterFunctionNArguments* args) {
+    auto* ctx = reinterpret_cast<const TraceContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
-        int placement = placementOf(RTCHitN_instID(args->hit, args->N, i, 0));
-        SurfaceId id = g->idOf(kTrianglesGeom, RTCHitN_primID(args->hit, args->N, i), placement);
-        bool meets = id != ctx->ray->leaving && !g->owner->hidden(id) && g->owner->meetsFlat(id, *ctx->ray);
-        if (!meets) args->valid[i] = 0;
+        SurfaceId id = candidate(args, i);
+        bool met = id == ctx->shadow->target || ctx->geometry->meetsTriangle(id, *ctx->ray);
+        if (!met || !ctx->shadow->ends(id, RTCRayN_tfar(args->ray, args->N, i))) args->valid[i] = 0;
     }
 }
 
@@ -113,11 +169,35 @@ void SceneGeometry::exactIntersect(const RTCIntersectFunctionNArguments* args) {
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);  // rtcIntersect1 only: N is 1
     SurfaceId id = g->idOf(kExactGeom, args->primID, placementOf(args->context->instID[0]));
-    if (g->owner->hidden(id)) return;
-    Ray ray = g->owner->localRay(*ctx->ray, id.instance);
-    ray.tmax = std::min(ray.tmax, static_cast<double>(rayhit->ray.tfar));
-    bool leaving = id == ctx->ray->leaving;
-    std::optional<ShapeHit> hit = std::visit(
+    std::optional<ShapeHit> hit = g->owner->exactHit(id, *ctx->ray, rayhit->ray.tfar);
+    if (!hit) return;
+    rayhit->ray.tfar = static_cast<float>(hit->t);
+    rayhit->hit.geomID = args->geomID;
+    rayhit->hit.primID = args->primID;
+    rayhit->hit.instID[0] = args->context->instID[0];
+    ctx->exactT = hit->t;
+    ctx->exactNormal = hit->normal;
+}
+
+// Occlusion queries (rtcOccluded1 only: N is 1); Embree's mark of a ray found blocked is tfar = -∞.
+void SceneGeometry::exactOccluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* g = static_cast<const Group*>(args->geometryUserPtr);
+    auto* ctx = reinterpret_cast<TraceContext*>(args->context);
+    auto* ray = reinterpret_cast<RTCRay*>(args->ray);
+    SurfaceId id = g->idOf(kExactGeom, args->primID, placementOf(args->context->instID[0]));
+    std::optional<ShapeHit> hit = g->owner->exactHit(id, *ctx->ray, ray->tfar);
+    if (hit && ctx->shadow->ends(id, hit->t)) ray->tfar = -std::numeric_limits<float>::infinity();
+}
+
+// The exact shape `id`'s hit by the world ray before Embree's current tfar, its own root at the ray's origin
+// skipped when the ray leaves it.
+std::optional<ShapeHit> SceneGeometry::exactHit(const SurfaceId& id, const Ray& world, float tfar) const {
+    if (hidden(id)) return std::nullopt;
+    Ray ray = localRay(world, id.instance);
+    ray.tmax = std::min(ray.tmax, static_cast<double>(tfar));
+    bool leaving = id == world.leaving;
+    return std::visit(
         [&](const auto& shape) -> std::optional<ShapeHit> {
             using T = std::decay_t<decltype(shape)>;
             if constexpr (std::is_same_v<T, Ring>) {
@@ -129,14 +209,7 @@ void SceneGeometry::exactIntersect(const RTCIntersectFunctionNArguments* args) {
                 return shape.intersect(ray, leaving);
             }
         },
-        g->owner->layout_.surfaces[id.surface].shape);
-    if (!hit) return;
-    rayhit->ray.tfar = static_cast<float>(hit->t);
-    rayhit->hit.geomID = args->geomID;
-    rayhit->hit.primID = args->primID;
-    rayhit->hit.instID[0] = args->context->instID[0];
-    ctx->exactT = hit->t;
-    ctx->exactNormal = hit->normal;
+        layout_.surfaces[id.surface].shape);
 }
 
 // The exact distance to a flat surface's plane (Embree's float t only chose the triangle), and its normal,
@@ -154,16 +227,9 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     ctx.geometry = this;
     ctx.ray = &ray;
     RTCRayHit rh{};
-    rh.ray.org_x = float(ray.org.x), rh.ray.org_y = float(ray.org.y), rh.ray.org_z = float(ray.org.z);
-    rh.ray.dir_x = float(ray.dir.x), rh.ray.dir_y = float(ray.dir.y), rh.ray.dir_z = float(ray.dir.z);
-    rh.ray.tnear = float(ray.tmin);
-    rh.ray.tfar = ray.tmax > 3e38 ? std::numeric_limits<float>::infinity() : float(ray.tmax);
-    rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    // Embree traces rays only within ±1.8e18 (its FLT_LARGE); farther ones meet nothing.
-    for (float v : {rh.ray.org_x, rh.ray.org_y, rh.ray.org_z, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z, rh.ray.tnear})
-        if (!(std::abs(v) <= 1.8e18f)) return std::nullopt;
+    if (!toEmbree(ray, rh.ray)) return std::nullopt;  // farther rays meet nothing
     rtcIntersect1(groups_[0].scene, &ctx.rtc, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     int placement = placementOf(rh.hit.instID[0]);
@@ -178,6 +244,28 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     hit.normal = placement < 0 ? normal : glm::normalize(layout_.placements[placement].transform.vector(normal));
     if (g.mesh) interpolateMesh(hit.surface, local, hit);
     return hit;
+}
+
+Occlusion SceneGeometry::occlusion(const Ray& ray, const SurfaceId& target, double distance,
+                                   const ShadowBlockers& blockers) const {
+    Ray shadow = ray;
+    ShadowQuery query{&blockers, target, distance};
+    if (std::isfinite(distance)) {
+        // Embree's float distances round relative to the coordinates' size; the walk orders hits by them.
+        double margin = 1e-5 * (distance + glm::compMax(glm::abs(ray.org)));
+        query.sureEnd = distance - margin;
+        shadow.tmax = distance + margin;
+    }
+    TraceContext ctx;
+    rtcInitIntersectContext(&ctx.rtc);
+    ctx.geometry = this;
+    ctx.ray = &shadow;
+    ctx.shadow = &query;
+    RTCRay r{};
+    if (!toEmbree(shadow, r)) return Occlusion::Unsure;
+    rtcOccluded1(groups_[0].scene, &ctx.rtc, &r);
+    if (r.tfar >= 0) return query.crossed ? Occlusion::Unsure : Occlusion::Clear;
+    return query.unsure || !blockers.blockersDecide() ? Occlusion::Unsure : Occlusion::Blocked;
 }
 
 // Radiance's mesh shading: the vertex normals and (u, v) interpolated at the hit by its barycentric weights;

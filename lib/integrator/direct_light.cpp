@@ -78,27 +78,41 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
     int nominal = light.sampleCount(sh.point, subdivision(state), state.weight);
     int count = thresholdedCount(nominal, share);
     uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    if (e.radiance.isBlack()) return sum;
     LightView view = light.view(sh.point);
+    Spectrum scratch;  // the radiance of patterned and focused sources (see sourceRadiance)
+    bool record = ctx.tree && ctx.tree->withShadowRays;
     for (int k = 0; k < count; ++k) {
         double u, v;
         sobol2D(k, scramble, u, v);
         auto s = light.sample(view, u, v);
-        if (!s || s->radiance.isBlack()) continue;
+        if (!s) continue;
         if (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius) continue;
         double cosL = glm::dot(sh.normal, s->dir);
         bool controlled = closedForm >= 0 && cosL > 0;
         Spectrum f = response(sh, lobes, s->dir, s->pdf * nominal, !controlled);
         if (f.isBlack() && !controlled) continue;
-        Spectrum le = sourceRadiance(light, *s, sh.point);
-        Spectrum t = shadowTransmittance(Ray{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface},
-                                         light, state, ctx);
-        if (ctx.tree && ctx.tree->withShadowRays) recordShadowRay(ctx, sh.point, *s, light, le * t);
+        Ray shadow{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface};
         float weight = float(1 / (s->pdf * count));
-        sum += f * t * le * weight;
-        if (controlled) {
-            blocked += (Spectrum(1.f) - t) * float(cosL * weight);
-            anyThrough = anyThrough || !t.isBlack();
+        Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), s->distance, scene_);
+        if (seen == Occlusion::Unsure) {
+            const Spectrum& le = sourceRadiance(light, *s, sh.point, scratch);
+            Spectrum t = shadowTransmittance(shadow, light, state, ctx);
+            if (record) recordShadowRay(ctx, sh.point, *s, light, le * t);
+            sum.addProduct(f * t, le, weight);
+            if (controlled) {
+                blocked += (Spectrum(1.f) - t) * float(cosL * weight);
+                anyThrough = anyThrough || !t.isBlack();
+            }
+            continue;
         }
+        // Transmission 1 or 0 in every channel: the same sums as above without a spectrum per ray, and the
+        // source's pattern evaluated only where it is seen.
+        bool clear = seen == Occlusion::Clear;
+        if (record) recordShadowRay(ctx, sh.point, *s, light, sourceRadiance(light, *s, sh.point, scratch) * float(clear));
+        if (clear && !f.isBlack()) sum.addProduct(f, sourceRadiance(light, *s, sh.point, scratch), weight);
+        if (controlled && !clear) blocked += float(cosL * weight);
+        anyThrough = anyThrough || (controlled && clear);
     }
     if (closedForm >= 0 && anyThrough) {
         // Every ray blocked means shadow: 0, not the closed form less a noisy estimate of itself (for the
@@ -143,18 +157,22 @@ Spectrum Integrator::response(const Shading& sh, const Lobes& lobes, const dvec3
     return f;
 }
 
-// The radiance a source sample sends toward `from`, with Radiance's spotlight focus (a spotlight acts as if
-// it were its focal distance farther behind its surface) and the source's pattern.
-Spectrum Integrator::sourceRadiance(const Light& light, const LightSample& s, const dvec3& from) const {
+// The radiance a source sample sends toward `from`: the emitter's own, or, with Radiance's spotlight focus (a
+// spotlight acts as if it were its focal distance farther behind its surface) and the source's pattern,
+// `scratch` made so, without a spectrum per sample.
+const Spectrum& Integrator::sourceRadiance(const Light& light, const LightSample& s, const dvec3& from,
+                                           Spectrum& scratch) const {
     const Emitter& e = light.emitter();
-    Spectrum le = s.radiance;
     bool finite = std::isfinite(s.distance);
-    if (e.kind == Emitter::Kind::Spotlight && finite)
-        le *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
+    bool focused = e.kind == Emitter::Kind::Spotlight && finite;
+    if (!focused && !light.patterned()) return e.radiance;
+    scratch = e.radiance;
+    if (focused)
+        scratch *= float(s.distance * s.distance / ((s.distance + e.spotFocus) * (s.distance + e.spotFocus)));
     if (light.patterned())
-        le *= sourcePattern(light, finite ? from + s.distance * s.dir : from, s.normal, s.dir,
-                            finite ? s.distance : kDistantSourceDistance);
-    return le;
+        scratch *= sourcePattern(light, finite ? from + s.distance * s.dir : from, s.normal, s.dir,
+                                 finite ? s.distance : kDistantSourceDistance);
+    return scratch;
 }
 
 // The colour of a source's patterns where a ray in direction `dir` meets it (e.g. a luminaire's intensity
@@ -183,6 +201,7 @@ void Integrator::recordShadowRay(Context& ctx, const dvec3& from, const LightSam
 Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
                                       const PathState& state, Context& ctx) const {
     Spectrum sum(0.f);
+    Spectrum scratch;
     for (const PlanarMirror& mirror : scene_.planarMirrors()) {
         double height = glm::dot(mirror.normal, sh.point) - mirror.offset;
         if (mirror.surface == surface || height <= 0) continue;  // mirrors reflect from their front only
@@ -200,7 +219,7 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                 double u, v;
                 sobol2D(k, scramble, u, v);
                 auto s = light.sample(view, u, v);
-                if (!s || s->radiance.isBlack()) continue;
+                if (!s || e.radiance.isBlack()) continue;
                 dvec3 d = s->dir - 2 * glm::dot(s->dir, mirror.normal) * mirror.normal;  // toward the image
                 double toMirror = -height / glm::dot(mirror.normal, d);
                 if (!(toMirror > 0) || toMirror >= s->distance) continue;
@@ -211,10 +230,15 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                 Spectrum t = transmittance(Ray{sh.point, d, std::numeric_limits<double>::infinity(), surface},
                                            mirror.surface, false, e.kind, crossing, ctx, &onMirror);
                 if (t.isBlack()) continue;
-                t *= shadowTransmittance(Ray{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface},
-                                         light, crossing, ctx);
+                Ray onward{onMirror.point, s->dir, std::numeric_limits<double>::infinity(), mirror.surface};
+                // The source's sample lies along the onward ray only if the way to the mirror went straight.
+                Occlusion seen = scene_.shadowsBend() ? Occlusion::Unsure
+                                                      : scene_.geometry().occlusion(onward, light.surface(),
+                                                                                    s->distance - toMirror, scene_);
+                if (seen == Occlusion::Blocked) continue;
+                if (seen == Occlusion::Unsure) t *= shadowTransmittance(onward, light, crossing, ctx);
                 if (!t.isBlack())
-                    sum += f * sourceRadiance(light, *s, image) * mirror.reflectance * t * float(1 / (s->pdf * count));
+                    sum += f * sourceRadiance(light, *s, image, scratch) * mirror.reflectance * t * float(1 / (s->pdf * count));
             }
         }
     }
@@ -223,7 +247,7 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
 
 // What reaches the source along a shadow ray: 1 if nothing is in the way, the product of glass and
 // clear-trans transmissions it crosses, 0 if something opaque or another emitter blocks it.
-Spectrum Integrator::shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const {
+Spectrum Integrator::shadowTransmittance(const Ray& ray, const Light& light, PathState state, Context& ctx) const {
     return transmittance(ray, light.surface(), light.isDistant(), light.emitter().kind, state, ctx, nullptr);
 }
 

@@ -100,7 +100,7 @@ private:
                               Context& ctx) const;
     Spectrum response(const Shading& sh, const Lobes& lobes, const dvec3& l, double lightDensity,
                       bool withDiffuse = true) const;
-    Spectrum sourceRadiance(const Light& light, const LightSample& s, const dvec3& from) const;
+    const Spectrum& sourceRadiance(const Light& light, const LightSample& s, const dvec3& from, Spectrum& scratch) const;
     Spectrum sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,
                            double distance) const;
     int shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Context& ctx) const;
@@ -109,7 +109,7 @@ private:
     void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
                          const Spectrum& value) const;
     bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
-    Spectrum shadowTransmittance(Ray ray, const Light& light, PathState state, Context& ctx) const;
+    Spectrum shadowTransmittance(const Ray& ray, const Light& light, PathState state, Context& ctx) const;
     Spectrum transmittance(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
                            PathState& state, Context& ctx, SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;

@@ -1,5 +1,6 @@
 #include "integrator/render_scene.h"
 
+#include <algorithm>
 #include <numbers>
 #include <set>
 
@@ -31,6 +32,40 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
         objectFrames_.push_back({p.patternTransform, p.patternTransform.inverse()});
     addSources();
     addMirrors();
+    findShadowBlockers();
+}
+
+// Which modifiers make their surfaces stop shadow rays, as the shadow-ray walk (Integrator::transmittance)
+// judges them: not patterned, mixed or cut away, and neither passing light (glass, trans, dielectric, void
+// materials) nor an illum, whose effect depends on the source behind it.
+void RenderScene::findShadowBlockers() {
+    std::vector<bool> cutAway(scene_.objects.size(), false);
+    for (const auto& [antimatter, cut] : antimatter_)
+        for (int modifier : cut) cutAway[modifier] = true;
+    blocksShadows_.assign(scene_.objects.size(), false);
+    for (int i = 0; i < int(scene_.objects.size()); ++i) {
+        shadowsBend_ = shadowsBend_ || scene_.objects[i].type == "dielectric";
+        int material = modifiers_->fixedMaterial(i);
+        if (modifiers_->varies(i) || material < 0 || cutAway[material] || clippedModifiers(material)) continue;
+        if (const Emitter* e = emitters_[material].get())
+            blocksShadows_[i] = e->kind != Emitter::Kind::Illum;
+        else
+            blocksShadows_[i] = materials_[material] && !materials_[material]->passesShadows();
+    }
+    blockersDecide_ = !shadowsBend_ && !anyVaryingSurface();
+}
+
+// Whether patterns or mixtures modify any surface a ray can meet (those on sources at infinity, skies, it
+// never meets): surfaces, instances and meshes, and the triangles of meshes.
+bool RenderScene::anyVaryingSurface() const {
+    for (const SceneObject& o : scene_.objects)
+        if ((isSurfaceType(o.type) || o.type == "instance" || o.type == "mesh") && modifiers_->varies(o.modifier))
+            return true;
+    for (const Prototype& p : geometry_->prototypes())
+        if (p.mesh && std::any_of(p.mesh->materials.begin(), p.mesh->materials.end(),
+                                  [&](int m) { return modifiers_->varies(m); }))
+            return true;
+    return false;
 }
 
 void RenderScene::checkTypes() const {

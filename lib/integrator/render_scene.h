@@ -21,7 +21,7 @@ struct PlanarMirror {
     Spectrum reflectance;
 };
 
-class RenderScene {
+class RenderScene : public ShadowBlockers {
 public:
     // Throws Error (file:line) for objects of unknown types, types Brume does not have yet, bad arguments.
     RenderScene(const Scene& scene, const MaterialSettings& settings);
@@ -66,6 +66,18 @@ public:
     bool isPlanarMirror(const SurfaceId& id) const {
         return id.instance < 0 && id.surface >= 0 && surfaceMirror_[id.surface] >= 0;
     }
+    // Surfaces that stop every shadow ray they meet: a fixed material that never transmits (or a source other
+    // than an illum), never cut away by antimatter.
+    bool blocksShadows(const SurfaceId& id) const override {
+        int modifier = surfaceModifier(id);
+        return modifier >= 0 && blocksShadows_[modifier];
+    }
+    // Whether a blocking surface met anywhere on a shadow ray (in whatever order Embree finds it) decides it:
+    // no surface can bend a shadow ray away from it (dielectric), nor draw random numbers where a shadow ray
+    // crosses it before (patterned or mixed surfaces), which would change the samples that follow.
+    bool blockersDecide() const override { return blockersDecide_; }
+    // Whether shadow rays may change direction where they cross a surface (dielectrics refract them).
+    bool shadowsBend() const { return shadowsBend_; }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
 
@@ -76,6 +88,8 @@ private:
     void addPlacedLights();
     void addAntimatter();
     void addMirrors();
+    void findShadowBlockers();
+    bool anyVaryingSurface() const;
 
     const Scene& scene_;
     std::unique_ptr<ModifierChain> modifiers_;
@@ -92,6 +106,9 @@ private:
     std::unordered_map<int, std::vector<int>> antimatter_;
     std::vector<PlanarMirror> mirrors_;
     std::vector<int> surfaceMirror_;  // index in mirrors_, or -1
+    std::vector<bool> blocksShadows_;  // per modifier object
+    bool blockersDecide_ = true;
+    bool shadowsBend_ = false;
 };
 
 }  // namespace brume

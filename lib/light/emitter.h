@@ -21,10 +21,8 @@ struct Emitter {
     int alternate = -1;       // illum: scene object of the alternate material, -1 when invisible
 
     // Radiance emitted in direction `out` (unit, away from the surface's front); spotlights cut off hard.
-    Spectrum emitted(const dvec3& out) const {
-        if (kind == Kind::Spotlight && glm::dot(out, spotAxis) < spotCosHalf) return Spectrum(0.f);
-        return radiance;
-    }
+    Spectrum emitted(const dvec3& out) const { return emitsToward(out) ? radiance : Spectrum(0.f); }
+    bool emitsToward(const dvec3& out) const { return kind != Kind::Spotlight || !(glm::dot(out, spotAxis) < spotCosHalf); }
     // Whether next-event estimation samples it (glow only within its radius; see Radiance's glow).
     bool isDirectSource() const { return kind != Kind::Glow || glowRadius > 0; }
 };

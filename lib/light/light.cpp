@@ -128,7 +128,7 @@ std::optional<LightSample> Light::sampleArea(const dvec3& p, double u, double v)
     dvec3 dir = toLight / dist;
     double cosLight = -glm::dot(n, dir);
     if (cosLight <= 0) return std::nullopt;  // emitters radiate from their front only
-    return LightSample{dir, dist, dist * dist / (area_ * cosLight), emitter_->emitted(-dir), n};
+    return LightSample{dir, dist, dist * dist / (area_ * cosLight), n};
 }
 
 // Front-lit polygons with few triangles are sampled by solid angle: their spherical triangles from p.
@@ -178,16 +178,21 @@ std::optional<LightSample> Light::sampleSolidAngle(const LightView& view, double
     }
     double cosLight = -glm::dot(poly.normal, dir);
     if (!(dist > 0) || cosLight <= 0) return std::nullopt;
-    return LightSample{dir, dist, 1 / view.solidAngle, emitter_->emitted(-dir), poly.normal};
+    return LightSample{dir, dist, 1 / view.solidAngle, poly.normal};
 }
 
 std::optional<LightSample> Light::sample(const LightView& view, double u, double v) const {
+    std::optional<LightSample> s = sampleShape(view, u, v);
+    if (s && !emitter_->emitsToward(-s->dir)) return std::nullopt;
+    return s;
+}
+
+std::optional<LightSample> Light::sampleShape(const LightView& view, double u, double v) const {
     if (view.solidAngle > 0) return sampleSolidAngle(view, u, v);
     const dvec3& p = view.point;
     if (isDistant()) {
         dvec3 dir = Frame(direction_).toWorld(uniformCone(u, v, oneMinusCos_));
-        return LightSample{dir, std::numeric_limits<double>::infinity(), 1 / (2 * kPi * oneMinusCos_),
-                           emitter_->emitted(-dir), -dir};
+        return LightSample{dir, std::numeric_limits<double>::infinity(), 1 / (2 * kPi * oneMinusCos_), -dir};
     }
     const auto* sphere = std::get_if<Sphere>(shape_);
     if (!sphere) return sampleArea(p, u, v);
@@ -201,8 +206,7 @@ std::optional<LightSample> Light::sample(const LightView& view, double u, double
     double b = glm::dot(dir, toCenter);
     double h2 = std::max(0.0, sphere->radius * sphere->radius - (dc * dc - b * b));
     double dist = b - std::sqrt(h2);
-    return LightSample{dir, dist, 1 / (2 * kPi * omc), emitter_->emitted(-dir),
-                       glm::normalize(p + dist * dir - sphere->center)};
+    return LightSample{dir, dist, 1 / (2 * kPi * omc), glm::normalize(p + dist * dir - sphere->center)};
 }
 
 namespace {
@@ -211,7 +215,8 @@ namespace {
 // ½ Σ γᵢ n·(rᵢ × rᵢ₊₁)/|rᵢ × rᵢ₊₁|, γᵢ the angle its edge i subtends; the polygon is first clipped to the
 // point's upper half-space.
 double lambertPolygon(const std::vector<dvec3>& vertices, const dvec3& p, const dvec3& n) {
-    std::vector<dvec3> clipped;
+    thread_local std::vector<dvec3> clipped;  // a scratch per thread: every shading point asks, for every source
+    clipped.clear();
     for (size_t i = 0; i < vertices.size(); ++i) {
         dvec3 a = vertices[i] - p, b = vertices[(i + 1) % vertices.size()] - p;
         double ha = glm::dot(a, n), hb = glm::dot(b, n);

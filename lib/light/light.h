@@ -12,11 +12,12 @@
 
 namespace brume {
 
+// A direction toward a source; its radiance is the emitter's (no spectrum per sample: the integrator reads
+// it where a shadow ray gets through).
 struct LightSample {
     dvec3 dir;        // unit, from the shading point toward the source
     double distance;  // to the sampled point (infinity for distant sources)
     double pdf;       // per unit solid angle
-    Spectrum radiance;
     dvec3 normal;     // the source's surface normal at the sampled point (−dir for distant sources)
 };
 
@@ -41,7 +42,7 @@ public:
     int sampleCount(const dvec3& p, double ratio, double weight) const;
     LightView view(const dvec3& p) const;
     // A direction toward the source from the view's point for the point (u, v) of the unit square; nullopt
-    // where the point cannot see the source's front or the sample carries no light.
+    // where the point cannot see the source's front or the sample carries no light (outside a spotlight's cone).
     std::optional<LightSample> sample(const LightView& view, double u, double v) const;
     // The solid-angle density with which sample() picks the direction that reached point `hit` (with the
     // source's normal there) from p.
@@ -67,6 +68,7 @@ public:
     std::vector<dvec3> outline(const dvec3& eye) const;
 
 private:
+    std::optional<LightSample> sampleShape(const LightView& view, double u, double v) const;
     std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;
     std::optional<LightSample> sampleSolidAngle(const LightView& view, double u, double v) const;
     dvec3 sampleTriangles(const LightView& view, double u, double v) const;

@@ -105,6 +105,8 @@ public:
     virtual bool scatter(const Shading& s, Lobes& lobes) const = 0;
     // A shadow ray crossing this surface goes on with this coefficient (black: blocked), possibly bent.
     virtual Spectrum shadowTransmission(const Shading& s, dvec3& dir) const { return Spectrum(0.f); }
+    // Whether shadowTransmission can be other than black anywhere (then shadow rays must walk through it).
+    virtual bool passesShadows() const { return false; }
 };
 
 // Settings materials need from the command line.

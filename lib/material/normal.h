@@ -8,6 +8,7 @@ public:
     NormalMaterial(const SceneObject& o, const MaterialSettings& settings);
     bool scatter(const Shading& s, Lobes& lobes) const override;
     Spectrum shadowTransmission(const Shading& s, dvec3& dir) const override;
+    bool passesShadows() const override { return kind_ == Kind::Trans && pure(); }
 
 private:
     enum class Kind { Plastic, Metal, Trans };

@@ -22,6 +22,7 @@ public:
     Glass(const SceneObject& o, const MaterialSettings& settings);
     bool scatter(const Shading& s, Lobes& lobes) const override;
     Spectrum shadowTransmission(const Shading& s, dvec3& dir) const override;
+    bool passesShadows() const override { return true; }
 
 private:
     void coefficients(double cosine, Spectrum& reflect, Spectrum& transmit) const;
@@ -37,6 +38,7 @@ public:
     explicit Dielectric(const SceneObject& o);
     bool scatter(const Shading& s, Lobes& lobes) const override;
     Spectrum shadowTransmission(const Shading& s, dvec3& dir) const override;
+    bool passesShadows() const override { return true; }
 
 private:
     // Fresnel reflectance and refracted direction (refracted is false on total internal reflection).

@@ -39,6 +39,18 @@ public:
     Spectrum& operator/=(const Spectrum& o) {
         return apply(o, [](float& a, float b) { a = b != 0.f ? a / b : 0.f; });
     }
+    // Adds s to every channel.
+    Spectrum& operator+=(float s) {
+        for (int i = 0; i < n_; ++i) v_[i] += s;
+        return *this;
+    }
+    // Adds a·b·s, as *this += a * b * s would, without that expression's temporaries (each one a Spectrum of
+    // full capacity).
+    Spectrum& addProduct(const Spectrum& a, const Spectrum& b, float s) {
+        assert(a.n_ == n_ && b.n_ == n_);
+        for (int i = 0; i < n_; ++i) v_[i] += a.v_[i] * b.v_[i] * s;
+        return *this;
+    }
     Spectrum& operator*=(float s) {
         for (int i = 0; i < n_; ++i) v_[i] *= s;
         return *this;
