@@ -182,7 +182,9 @@ private:
         p.depth = !o_.depthOutput.empty();
         p.drawSources = o_.render.directVisible && p.aperture == 0;
         fitResolution(f.view, p);
-        if (p.xres <= 0 || p.yres <= 0) throw Error("resolution " + std::to_string(p.xres) + "x" + std::to_string(p.yres) + " has no pixels");
+        if (p.xres <= 0 || p.yres <= 0 || double(p.xres) * p.yres > kMaxPicturePixels)
+            throw Error("bad resolution " + std::to_string(p.xres) + "x" + std::to_string(p.yres) + " (at most " +
+                        std::to_string(long(kMaxPicturePixels)) + " pixels)");
         RenderSettings settings = o_.render;
         settings.time = f.time;
         Integrator integrator(renderScene_, settings);

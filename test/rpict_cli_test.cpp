@@ -152,6 +152,8 @@ TEST_F(RpictCli, ErrorsAreClearAndLeaveNoPicture) {
     EXPECT_NE(r.err.find("motion blur"), std::string::npos) << r.err;
     r = rpict("s.rad -x 8");
     EXPECT_NE(r.status, 0);
+    r = rpict("-x 100000 -y 100000 s.rad");
+    EXPECT_NE(r.err.find("rpict: bad resolution 100000x100000"), std::string::npos) << r.err;
 }
 
 // Radiance's rpict defaults (-defaults), where they differ from rtrace's.
