@@ -44,8 +44,8 @@ public:
     RenderedPicture run() {
         bool adapt = s_.sampleSpacing > 1 && w_ >= 2 && h_ >= 2;
         if (adapt) xs_ = gridLines(w_, s_.sampleSpacing), ys_ = gridLines(h_, s_.sampleSpacing);
-        // Progress counts pixels as they are settled: traced or interpolated.
-        if (progress_) progress_->start(long(w_) * h_);
+        // Progress counts the first pass's samples, then every pixel again as its row is settled.
+        if (progress_) progress_->start(long(w_) * h_ + long(xs_.size() * ys_.size()));
         if (adapt) adaptive();
         else traceAll();
         if (s_.drawSources && !s_.irradiance)
@@ -90,93 +90,62 @@ private:
         });
     }
 
-    // The first pass samples the grid; then the pixels between grid samples along the grid lines, then those
-    // inside each tile, are refined: where the ends (corners) agree they are interpolated, else the middle is
-    // traced and each half refined in turn (Radiance's recursive refinement). Each pixel belongs to one grid
-    // segment or one tile, and each is refined by one task in a fixed order, so the picture does not depend
-    // on the threads.
+    // First pass on the grid; tiles whose corners differ are traced whole, the others interpolated.
     void adaptive() {
         const std::vector<int>&xs = xs_, &ys = ys_;
         tbb::parallel_for(size_t(0), ys.size(), [&](size_t j) {
             for (int x : xs) trace(x, ys[j]);
             if (progress_) progress_->advance(long(xs.size()), long(xs.size()));
         });
-        size_t nx = xs.size() - 1, ny = ys.size() - 1;
-        // Segments: the horizontal ones (ny + 1 rows of nx), then the vertical ones (nx + 1 columns of ny).
-        tbb::parallel_for(size_t(0), (ny + 1) * nx + (nx + 1) * ny, [&](size_t k) {
-            bool across = k < (ny + 1) * nx;
-            size_t i = across ? k % nx : (k - (ny + 1) * nx) / ny, j = across ? k / nx : (k - (ny + 1) * nx) % ny;
-            Span a{xs[i], ys[j]}, b = across ? Span{xs[i + 1], ys[j]} : Span{xs[i], ys[j + 1]};
-            long traced = refineSegment(a, b);
-            if (progress_) progress_->advance(std::max(b.x - a.x, b.row - a.row) - 1, traced);
-        });
-        tbb::parallel_for(size_t(0), nx * ny, [&](size_t k) {
-            size_t i = k % nx, j = k / nx;
-            long traced = refineTile(xs[i], ys[j], xs[i + 1], ys[j + 1]);
-            if (progress_) progress_->advance(long(xs[i + 1] - xs[i] - 1) * (ys[j + 1] - ys[j] - 1), traced);
-        });
-    }
-
-    struct Span {
-        int x, row;
-    };
-
-    bool agree(const Span& a, const Span& b) { return !differ(pixel(a.x, a.row), pixel(b.x, b.row), s_.sampleThreshold); }
-
-    // Pixels strictly between a and b (on one row or column), a and b settled; returns how many were traced.
-    long refineSegment(Span a, Span b) {
-        int n = std::max(b.x - a.x, b.row - a.row);
-        if (n <= 1) return 0;
-        if (agree(a, b)) {
-            for (int k = 1; k < n; ++k) {
-                Span p{a.x + (b.x - a.x) * k / n, a.row + (b.row - a.row) * k / n};
-                blend(p, {at(a.x, a.row), at(b.x, b.row)}, {double(n - k) / n, double(k) / n});
+        std::vector<char> busy((xs.size() - 1) * (ys.size() - 1));
+        for (size_t j = 0; j + 1 < ys.size(); ++j)
+            for (size_t i = 0; i + 1 < xs.size(); ++i) {
+                const float* c[4] = {pixel(xs[i], ys[j]), pixel(xs[i + 1], ys[j]), pixel(xs[i], ys[j + 1]),
+                                     pixel(xs[i + 1], ys[j + 1])};
+                bool b = false;
+                for (int p = 0; p < 4 && !b; ++p)
+                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], s_.sampleThreshold);
+                busy[j * (xs.size() - 1) + i] = b;
             }
-            return 0;
-        }
-        Span m{(a.x + b.x) / 2, (a.row + b.row) / 2};
-        trace(m.x, m.row);
-        return 1 + refineSegment(a, m) + refineSegment(m, b);
+        // Tile (i, j) spans columns xs[i]..xs[i+1] and rows ys[j]..ys[j+1], edges included: a pixel on an
+        // edge is traced when any tile holding it is busy, else interpolated along the edge alone, which both
+        // tiles agree on.
+        std::vector<int> tileOfX(w_), tileOfY(h_);
+        for (size_t i = 0; i + 1 < xs.size(); ++i) std::fill(&tileOfX[xs[i]], &tileOfX[xs[i + 1]] + 1, int(i));
+        for (size_t j = 0; j + 1 < ys.size(); ++j) std::fill(&tileOfY[ys[j]], &tileOfY[ys[j + 1]] + 1, int(j));
+        auto isBusy = [&](int x, int row) {
+            size_t nx = xs.size() - 1;
+            int i = tileOfX[x], j = tileOfY[row];
+            bool b = busy[j * nx + i];
+            if (i > 0 && x == xs[i]) b = b || busy[j * nx + i - 1];
+            if (j > 0 && row == ys[j]) b = b || busy[(j - 1) * nx + i];
+            if (i > 0 && j > 0 && x == xs[i] && row == ys[j]) b = b || busy[(j - 1) * nx + i - 1];
+            return b;
+        };
+        tbb::parallel_for(0, h_, [&](int row) {
+            long samples = 0;
+            for (int x = 0; x < w_; ++x) {
+                if (traced_[at(x, row)]) continue;
+                if (isBusy(x, row)) trace(x, row), ++samples;
+                else interpolate(x, row, xs[tileOfX[x]], xs[tileOfX[x] + 1], ys[tileOfY[row]], ys[tileOfY[row] + 1]);
+            }
+            if (progress_) progress_->advance(w_, samples);
+        });
     }
 
-    // Pixels strictly inside the tile (x0, y0)-(x1, y1), its edges settled: interpolated if its corners agree
-    // and none of its edge pixels needed tracing, else split across its longer side, the split line refined
-    // first. Returns how many were traced.
-    long refineTile(int x0, int y0, int x1, int y1) {
-        if (x1 - x0 <= 1 || y1 - y0 <= 1) return 0;
-        Span c[4] = {{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}};
-        bool busy = !agree(c[0], c[1]) || !agree(c[0], c[2]) || !agree(c[0], c[3]) || !agree(c[1], c[2]) ||
-                    !agree(c[1], c[3]) || !agree(c[2], c[3]);
-        for (int x = x0 + 1; x < x1 && !busy; ++x) busy = traced_[at(x, y0)] || traced_[at(x, y1)];
-        for (int y = y0 + 1; y < y1 && !busy; ++y) busy = traced_[at(x0, y)] || traced_[at(x1, y)];
-        if (!busy) {
-            for (int y = y0 + 1; y < y1; ++y)
-                for (int x = x0 + 1; x < x1; ++x) {
-                    double u = double(x - x0) / (x1 - x0), v = double(y - y0) / (y1 - y0);
-                    blend({x, y}, {at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)},
-                          {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v});
-                }
-            return 0;
-        }
-        if (x1 - x0 >= y1 - y0) {
-            int xm = (x0 + x1) / 2;
-            return refineSegment({xm, y0}, {xm, y1}) + refineTile(x0, y0, xm, y1) + refineTile(xm, y0, x1, y1);
-        }
-        int ym = (y0 + y1) / 2;
-        return refineSegment({x0, ym}, {x1, ym}) + refineTile(x0, y0, x1, ym) + refineTile(x0, ym, x1, y1);
-    }
-
-    // Pixel p as the weighted sum of settled pixels (their indices), depth too.
-    void blend(Span p, std::initializer_list<size_t> from, std::initializer_list<double> weights) {
-        float* out = pixel(p.x, p.row);
+    // Bilinear between the tile's traced corners (x0, y0)-(x1, y1).
+    void interpolate(int x, int row, int x0, int x1, int y0, int y1) {
+        double u = double(x - x0) / (x1 - x0), v = double(row - y0) / (y1 - y0);
+        double wt[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
+        size_t corner[4] = {at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)};
+        float* p = pixel(x, row);
         float d = 0;
-        auto w = weights.begin();
-        for (size_t i : from) {
-            const float* c = &out_.picture.pixels[3 * i];
-            for (int ch = 0; ch < 3; ++ch) out[ch] += float(*w) * c[ch];
-            d += float(*w++) * depth_[i];
+        for (int k = 0; k < 4; ++k) {
+            const float* c = &out_.picture.pixels[3 * corner[k]];
+            for (int ch = 0; ch < 3; ++ch) p[ch] += float(wt[k]) * c[ch];
+            d += float(wt[k]) * depth_[corner[k]];
         }
-        depth_[at(p.x, p.row)] = d;
+        depth_[at(x, row)] = d;
     }
 
     const Integrator& integrator_;
