@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -145,16 +144,6 @@ std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::st
     return h;
 }
 
-void writeDepth(const std::string& path, const std::vector<float>& depth) {
-    std::string temporary = path + ".tmp";
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(depth.data()), std::streamsize(depth.size() * sizeof(float)));
-    if (!out.flush() || std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw Error("cannot write depth file \"" + path + "\"");
-    }
-}
-
 class Rpict {
 public:
     Rpict(const Options& o, const Scene& scene, std::vector<std::string> command)
@@ -193,7 +182,7 @@ private:
         r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
         if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture, laterFrame);
         else writePictureFile(picturePath, r.picture, o_.exrFloat);
-        if (p.depth) writeDepth(frameFileName(o_.depthOutput, f.number), r.depth);
+        if (p.depth) writeDepthFile(frameFileName(o_.depthOutput, f.number), r.depth);
     }
 
     const Options& o_;

@@ -9,24 +9,18 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <Imath/half.h>
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <ctime>
-#include <filesystem>
 #include <optional>
-#include <random>
 #include <sstream>
 #include <stdexcept>
-#include <utility>
 
 #include "util/error.h"
 #include "util/header.h"
+#include "util/pending_file.h"
 
 namespace brume {
 
@@ -34,7 +28,6 @@ namespace {
 
 // Radiance's WHTEFFICACY (color.h): lumens per watt of its equal-energy white, luminance = 179 × Y.
 constexpr double kWhiteEfficacy = 179;
-constexpr float kHalfMax = HALF_MAX;
 const char* const kChannels[3] = {"R", "G", "B"};
 
 // Radiance's default primaries (color.h STDPRIMS, the "nominal CRT" ones with an equal-energy white).
@@ -145,43 +138,6 @@ Imf::Header exrHeader(const Picture& p, ExrPixels pixels) {
 
 // ---- writing, through a temporary file ----
 
-// A new file beside `path`, renamed over it by commit() once written and synced; removed if never committed.
-class PendingFile {
-public:
-    explicit PendingFile(const std::string& path) {
-        std::filesystem::path target(path);
-        std::random_device random;
-        for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
-            char suffix[32];
-            std::snprintf(suffix, sizeof suffix, ".%08x.tmp", unsigned(random()));
-            name_ = (target.parent_path() / ("." + target.filename().string() + suffix)).string();
-            // 0666 as for any new file: the umask decides, as it would for `path` itself.
-            fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-            if (fd_ < 0 && errno != EEXIST) break;
-        }
-        if (fd_ < 0) throw std::runtime_error(std::strerror(errno));
-    }
-    PendingFile(const PendingFile&) = delete;
-    PendingFile& operator=(const PendingFile&) = delete;
-    ~PendingFile() {
-        if (fd_ >= 0) ::close(fd_);
-        if (!committed_) ::unlink(name_.c_str());
-    }
-    const std::string& name() const { return name_; }
-
-    void commit(const std::string& path) {
-        // The data reaches the disk before the name does: after a crash, `path` is the old file or the new.
-        if (::fsync(fd_) != 0 || ::close(std::exchange(fd_, -1)) != 0 || std::rename(name_.c_str(), path.c_str()) != 0)
-            throw std::runtime_error(std::strerror(errno));
-        committed_ = true;
-    }
-
-private:
-    std::string name_;
-    int fd_ = -1;
-    bool committed_ = false;
-};
-
 // OpenEXR converts pixel types when reading but not when writing: the frame buffer has the file's type.
 template <class Pixel>
 void writePixels(const std::string& name, const Imf::Header& h, const std::vector<Pixel>& pixels, Imf::PixelType type,
@@ -200,7 +156,7 @@ void writePixels(const std::string& name, const Imf::Header& h, const std::vecto
 // pixel a filter touches; the largest half keeps them finite and as bright as half can say.
 std::vector<half> halves(const std::vector<float>& pixels) {
     std::vector<half> h(pixels.size());
-    for (size_t i = 0; i < pixels.size(); ++i) h[i] = half(std::clamp(pixels[i], -kHalfMax, kHalfMax));
+    for (size_t i = 0; i < pixels.size(); ++i) h[i] = half(std::clamp(pixels[i], -kLargestHalf, kLargestHalf));
     return h;
 }
 
@@ -212,7 +168,7 @@ void writeOpenExrPicture(const std::string& path, const Picture& p, ExrPixels pi
         PendingFile file(path);
         if (pixels == ExrPixels::half) writePixels(file.name(), header, halves(p.pixels), Imf::HALF, p.width, p.height);
         else writePixels(file.name(), header, p.pixels, Imf::FLOAT, p.width, p.height);
-        file.commit(path);
+        file.commit();
     } catch (const std::exception& e) {
         throw Error("cannot write " + path + ": " + e.what());
     }

@@ -23,8 +23,10 @@
 
 namespace brume {
 
-// Half keeps 11 bits of mantissa and values up to 65504 (larger ones are written as 65504); float is exact.
+// Half keeps 11 bits of mantissa and values up to kLargestHalf (larger ones are written as kLargestHalf);
+// float is exact.
 enum class ExrPixels { half, float32 };
+inline constexpr float kLargestHalf = 65504.f;
 
 // Writes `picture` to `path` (ZIP compression) through a temporary file in the same directory, renamed over
 // `path` once complete and on disk: a failed or interrupted write leaves whatever was at `path` before.

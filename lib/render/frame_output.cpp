@@ -7,17 +7,15 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <ostream>
 
 #include "io/openexr_picture.h"
 #include "util/error.h"
+#include "util/pending_file.h"
 
 namespace brume {
 
 namespace {
-
-constexpr float kHalfMax = 65504.f;  // the largest finite half float
 
 // The conversion's span [begin, end) in the pattern, or begin = npos when there is none.
 std::pair<size_t, size_t> conversion(const std::string& pattern) {
@@ -78,26 +76,18 @@ bool claimFile(const std::string& path) {
 
 void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat) {
     if (endsWith(path, ".exr")) {
-        if (!exrFloat && std::any_of(picture.pixels.begin(), picture.pixels.end(), [](float v) { return v > kHalfMax; }))
-            warn(path + ": values above " + std::to_string(int(kHalfMax)) + " (a light source, the sun) clamped in half floats; -ef f keeps them");
+        if (!exrFloat && std::any_of(picture.pixels.begin(), picture.pixels.end(), [](float v) { return v > kLargestHalf; }))
+            warn(path + ": values above " + std::to_string(int(kLargestHalf)) + " (a light source, the sun) clamped in half floats; -ef f keeps them");
         writeOpenExrPicture(path, picture, exrFloat ? ExrPixels::float32 : ExrPixels::half);
         return;
     }
-    std::string temporary = path + ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (out) writeRadiancePicture(out, picture);
-        if (!out.flush()) {
-            std::remove(temporary.c_str());
-            throw Error("cannot write output file \"" + path + "\"");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::remove(temporary.c_str());
-        throw Error("cannot write output file \"" + path + "\": " + ec.message());
-    }
+    writeWhole(path, [&picture](std::ostream& out) { writeRadiancePicture(out, picture); });
+}
+
+void writeDepthFile(const std::string& path, const std::vector<float>& depth) {
+    writeWhole(path, [&depth](std::ostream& out) {
+        out.write(reinterpret_cast<const char*>(depth.data()), std::streamsize(depth.size() * sizeof(float)));
+    });
 }
 
 }  // namespace brume

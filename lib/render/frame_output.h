@@ -4,6 +4,7 @@
 // several processes can share one sequence), a single picture refuses. A file appears whole or not at all.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "io/picture.h"
 
@@ -23,5 +24,9 @@ bool claimFile(const std::string& path);
 // Writes `picture` to `path` (claimed or not) through a temporary file renamed into place: Radiance's
 // format, or OpenEXR (half or float pixels) when the name ends in .exr.
 void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat);
+
+// Writes a depth buffer (-z): one 32-bit float per pixel, top row first, as Radiance's pinterp reads; whole
+// or not at all.
+void writeDepthFile(const std::string& path, const std::vector<float>& depth);
 
 }  // namespace brume

@@ -37,5 +37,8 @@ TEST(FrameOutput, ClaimsAreExclusiveAndWritesReplaceThem) {
     EXPECT_NEAR(back.pixels[17], 0.5, 0.5 / 128);  // RGBE: 8-bit mantissas
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);  // no temporary left
     EXPECT_THROW(claimFile((dir / "no/such/dir/f.hdr").string()), Error);
+    EXPECT_THROW(writePictureFile((dir / "no/such/dir/f.hdr").string(), p, false), Error);
+    EXPECT_THROW(writeDepthFile((dir / "f1.hdr/d.z").string(), {1.f}), Error);  // a file is no directory
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
     std::filesystem::remove_all(dir);
 }
