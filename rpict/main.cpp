@@ -42,17 +42,14 @@ struct Options {
     }
 };
 
-const auto& addInt = addIntOption;
-const auto& addReal = addRealOption;
-
 void addPictureOptions(OptionTable& t, PictureSettings& p) {
-    addInt(t, "-x", p.xres, "x resolution");
-    addInt(t, "-y", p.yres, "y resolution");
-    addReal(t, "-pa", p.pixelAspect, "pixel aspect ratio (height/width; 0: keep -x and -y)");
-    addReal(t, "-pj", p.jitter, "pixel jitter");
-    addReal(t, "-pd", p.aperture, "pixel depth of field: lens diameter, focused at the length of -vd");
-    addInt(t, "-ps", p.sampleSpacing, "pixel sample spacing of the first pass");
-    addReal(t, "-pt", p.sampleThreshold, "pixel threshold: relative difference traced between samples");
+    addIntOption(t, "-x", p.xres, "x resolution");
+    addIntOption(t, "-y", p.yres, "y resolution");
+    addRealOption(t, "-pa", p.pixelAspect, "pixel aspect ratio (height/width; 0: keep -x and -y)");
+    addRealOption(t, "-pj", p.jitter, "pixel jitter");
+    addRealOption(t, "-pd", p.aperture, "pixel depth of field: lens diameter, focused at the length of -vd");
+    addIntOption(t, "-ps", p.sampleSpacing, "pixel sample spacing of the first pass");
+    addRealOption(t, "-pt", p.sampleThreshold, "pixel threshold: relative difference traced between samples");
     t.add("-pm", 1, "pixel motion blur (only 0)", [](const auto& a) {
         if (toReal("-pm", a[0]) != 0) throw Error("motion blur (-pm) is not supported by Brume yet");
     }, [] { return std::string("0.000000"); });
@@ -64,14 +61,14 @@ OptionTable makeTable(Options& o) {
     addViewOptions(t, o.view);
     addPictureOptions(t, o.picture);
     addRenderOptions(t, o.render, o.picture.irradiance);
-    addReal(t, "-t", o.reportInterval, "seconds between progress reports (0: none, or a live line on a terminal)");
-    addInt(t, "-S", o.sequenceStart, "sequence: render a picture per view line on the standard input, numbered from this");
+    addRealOption(t, "-t", o.reportInterval, "seconds between progress reports (0: none, or a live line on a terminal)");
+    addIntOption(t, "-S", o.sequenceStart, "sequence: render a picture per view line on the standard input, numbered from this");
     t.add("-o", 1, "output file (pattern with %d for sequences; .exr: OpenEXR)", [&o](const auto& a) { o.output = a[0]; });
     t.add("-z", 1, "depth output file (floats per pixel; pattern with %d for sequences)",
           [&o](const auto& a) { o.depthOutput = a[0]; });
     t.add("-path", 1, "camera path: lines of time px py pz dx dy dz [ux uy uz]",
           [&o](const auto& a) { o.cameraPath = a[0]; });
-    addReal(t, "-fps", o.framesPerSecond, "frames per second along -path (0: a frame per key)");
+    addRealOption(t, "-fps", o.framesPerSecond, "frames per second along -path (0: a frame per key)");
     t.add("-ef", 1, "OpenEXR pixels: h (half) or f (float)", [&o](const auto& a) {
         if (a[0] != "h" && a[0] != "f") throw Error("bad OpenEXR pixel type '" + a[0] + "' for -ef (h or f)");
         o.exrFloat = a[0] == "f";

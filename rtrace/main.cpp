@@ -5,7 +5,6 @@
 #include <bit>
 #include <cstdio>
 #include <iostream>
-#include <thread>
 
 #include "integrator/integrator.h"
 #include "integrator/render_options.h"

@@ -45,7 +45,7 @@ Shape cone(const SceneObject& o) {
     dvec3 base = point(o, 0), top = point(o, 3);
     // Radiance refuses radii of opposite signs (or both zero), and turns a cone with negative ones inside out.
     auto sign = [](double r) { return r < 0 ? -1 : r > 0 ? 1 : 0; };
-    if (sign(r0) + sign(r1) == 0 || (constantRadius && r0 == 0))
+    if (sign(r0) + sign(r1) == 0)
         throw Error(o.where, "illegal radii for " + o.type + " \"" + o.name + "\"");
     bool inward = (o.type == "cup" || o.type == "tube") != negativeRadius(o, r0 < 0 || r1 < 0);
     if (glm::length(top - base) == 0) throw Error(o.where, "zero length " + o.type + " \"" + o.name + "\"");

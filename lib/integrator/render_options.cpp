@@ -10,16 +10,12 @@ namespace brume {
 
 namespace {
 
-const auto& addInt = addIntOption;
-const auto& addReal = addRealOption;
-const auto& real = formatReal;
-
 void addColor(OptionTable& t, const std::string& name, Spectrum& v, const std::string& help) {
     t.add(name, 3, help,
           [&v, name](const auto& a) {
               v = Spectrum(float(toReal(name, a[0])), float(toReal(name, a[1])), float(toReal(name, a[2])));
           },
-          [&v] { return real(v[0]) + " " + real(v[1]) + " " + real(v[2]); });
+          [&v] { return formatReal(v[0]) + " " + formatReal(v[1]) + " " + formatReal(v[2]); });
 }
 
 }  // namespace
@@ -28,22 +24,22 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addBool("-u", s.randomSampling, "uncorrelated random sampling (- : reproducible, same result for any -n)");
     t.addBool("-bv", s.materials.backVisible, "back face visibility");
     t.addBool("-i", irradianceAtHit, "irradiance at the first opaque surface hit");
-    addReal(t, "-dt", s.directThreshold, "direct threshold (fewer shadow rays to weaker sources)");
-    addReal(t, "-dc", s.directCertainty, "direct certainty");
-    addReal(t, "-dj", s.sourceJitter, "direct jitter (sources are always sampled stratified)");
-    addReal(t, "-ds", s.sourceSubdivision, "direct sampling: source size/distance ratio per shadow ray");
-    addInt(t, "-dr", s.directRelays, "direct relays: sources seen in flat mirrors (one relay)");
-    addInt(t, "-dp", s.directPresamples, "direct pretest density");
+    addRealOption(t, "-dt", s.directThreshold, "direct threshold (fewer shadow rays to weaker sources)");
+    addRealOption(t, "-dc", s.directCertainty, "direct certainty");
+    addRealOption(t, "-dj", s.sourceJitter, "direct jitter (sources are always sampled stratified)");
+    addRealOption(t, "-ds", s.sourceSubdivision, "direct sampling: source size/distance ratio per shadow ray");
+    addIntOption(t, "-dr", s.directRelays, "direct relays: sources seen in flat mirrors (one relay)");
+    addIntOption(t, "-dp", s.directPresamples, "direct pretest density");
     t.addBool("-dv", s.directVisible, "light sources visible");
-    addReal(t, "-ss", s.specularJitter, "specular sampling");
-    addReal(t, "-st", s.materials.specularThreshold, "specular threshold: sampled rays above it");
+    addRealOption(t, "-ss", s.specularJitter, "specular sampling");
+    addRealOption(t, "-st", s.materials.specularThreshold, "specular threshold: sampled rays above it");
     addColor(t, "-av", s.ambientValue, "ambient value beyond the last bounce");
-    addInt(t, "-aw", s.ambientWeight, "ambient value weight");
-    addInt(t, "-ab", s.ambientBounces, "ambient bounces (diffuse interreflections, exactly)");
-    addReal(t, "-aa", s.ambientAccuracy, "ambient accuracy (0: path tracing; cache: later)");
-    addInt(t, "-ar", s.ambientResolution, "ambient resolution");
-    addInt(t, "-ad", s.ambientDivisions, "ambient divisions: paths at the first bounce");
-    addInt(t, "-as", s.ambientSupersamples, "ambient super-samples");
+    addIntOption(t, "-aw", s.ambientWeight, "ambient value weight");
+    addIntOption(t, "-ab", s.ambientBounces, "ambient bounces (diffuse interreflections, exactly)");
+    addRealOption(t, "-aa", s.ambientAccuracy, "ambient accuracy (0: path tracing; cache: later)");
+    addIntOption(t, "-ar", s.ambientResolution, "ambient resolution");
+    addIntOption(t, "-ad", s.ambientDivisions, "ambient divisions: paths at the first bounce");
+    addIntOption(t, "-as", s.ambientSupersamples, "ambient super-samples");
     t.addUnsupported("-af", 1, "ambient cache file");
     t.addUnsupported("-ae", 1, "ambient exclude modifier");
     t.addUnsupported("-ai", 1, "ambient include modifier");
@@ -54,9 +50,9 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addUnsupported("-mg", 1, "mist scattering eccentricity");
     t.addUnsupported("-ms", 1, "mist sampling distance");
     t.add("-T", 1, "scene time (s) for time-varying content", [&s](const auto& a) { s.time = toReal("-T", a[0]); },
-          [&s] { return s.time ? real(*s.time) : std::string("0 (none)"); });
-    addInt(t, "-lr", s.maxReflections, "limit reflections (< 0: Russian roulette past |lr|)");
-    addReal(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
+          [&s] { return s.time ? formatReal(*s.time) : std::string("0 (none)"); });
+    addIntOption(t, "-lr", s.maxReflections, "limit reflections (< 0: Russian roulette past |lr|)");
+    addRealOption(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
 }
 
 void addProgramOptions(OptionTable& t, ProgramOptions& o) {

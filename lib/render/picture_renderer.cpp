@@ -49,8 +49,7 @@ public:
         if (adapt) adaptive();
         else traceAll();
         if (s_.drawSources && !s_.irradiance)
-            drawSmallSources(integrator_, integrator_.scene(), view_, std::max(1, s_.sampleSpacing), out_.picture,
-                             s_.depth ? &depth_ : nullptr);
+            drawSmallSources(integrator_, view_, std::max(1, s_.sampleSpacing), out_.picture, s_.depth ? &depth_ : nullptr);
         if (progress_) progress_->finish();
         if (s_.depth) out_.depth = std::move(depth_);
         return std::move(out_);

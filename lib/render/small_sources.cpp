@@ -127,9 +127,9 @@ void drawSource(const Integrator& integrator, const Light& light, const View& vi
 
 }  // namespace
 
-void drawSmallSources(const Integrator& integrator, const RenderScene& scene, const View& view, double widthLimit,
-                      Picture& picture, std::vector<float>* depth) {
-    for (const Light& light : scene.lights()) {
+void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, Picture& picture,
+                      std::vector<float>* depth) {
+    for (const Light& light : integrator.scene().lights()) {
         if (light.emitter().kind == Emitter::Kind::Illum) continue;
         if (light.isDistant() && view.type == kParallel) continue;  // a parallel view sees all of it or none
         Outline outline = pixelOutline(light, view, picture.width, picture.height);

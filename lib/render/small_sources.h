@@ -11,10 +11,10 @@
 
 namespace brume {
 
-// Draws the sources of `scene` narrower than `widthLimit` pixels into `picture` (its pixels rows from the
-// top), and their distance into `depth` where nearer, if given. A source is drawn where a ray through the
+// Draws the sources of the integrator's scene narrower than `widthLimit` pixels into `picture` (its pixels
+// rows from the top), and their distance into `depth` where nearer, if given. A source is drawn where a ray through the
 // middle of its part of a pixel reaches it unobstructed. Illum sources (windows) are not drawn.
-void drawSmallSources(const Integrator& integrator, const RenderScene& scene, const View& view, double widthLimit,
-                      Picture& picture, std::vector<float>* depth);
+void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, Picture& picture,
+                      std::vector<float>* depth);
 
 }  // namespace brume
