@@ -152,6 +152,16 @@ TEST_F(RpictCli, ErrorsAreClearAndLeaveNoPicture) {
     EXPECT_NE(r.err.find("motion blur"), std::string::npos) << r.err;
     r = rpict("s.rad -x 8");
     EXPECT_NE(r.status, 0);
+    r = rpict("-S 1 -path p.txt s.rad");
+    EXPECT_NE(r.err.find("-S and -path are exclusive"), std::string::npos) << r.err;
+    r = rpict("-S 1 -", "VIEW= -vp 0 0 0\n");
+    EXPECT_NE(r.err.find("cannot be read from the standard input with -S"), std::string::npos) << r.err;
+    r = rpict("-S -2 s.rad");
+    EXPECT_NE(r.err.find("bad sequence start -2"), std::string::npos) << r.err;
+    r = rpict("-ef x -o p.exr s.rad");
+    EXPECT_NE(r.err.find("bad OpenEXR pixel type 'x'"), std::string::npos) << r.err;
+    r = rpict("-path missing.txt s.rad");
+    EXPECT_NE(r.err.find("missing.txt: cannot open camera path"), std::string::npos) << r.err;
     r = rpict("-x 100000 -y 100000 s.rad");
     EXPECT_NE(r.err.find("rpict: bad resolution 100000x100000"), std::string::npos) << r.err;
 }
