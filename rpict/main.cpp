@@ -173,8 +173,10 @@ private:
                         std::to_string(long(kMaxPicturePixels)) + " pixels)");
         RenderSettings settings = o_.render;
         settings.time = f.time;
-        Integrator integrator(renderScene_, settings);
+        Integrator integrator(renderScene_, settings, cache_);
+        cache_ = integrator.cache();  // later frames reuse its records
         RenderedPicture r = renderPicture(integrator, f.view, p, &progress_);
+        if (cache_ && o_.reportInterval > 0) std::fprintf(stderr, "rpict: irradiance cache: %s\n", cache_->summary().c_str());
         bool laterFrame = picturePath.empty() && framesOnOutput_++ > 0;
         r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
         if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture, laterFrame);
@@ -187,6 +189,7 @@ private:
     RenderScene renderScene_;
     std::vector<std::string> command_;
     ProgressMeter progress_;
+    std::shared_ptr<IrradianceCache> cache_;
     int framesOnOutput_ = 0;
 };
 
@@ -197,10 +200,10 @@ int run(int argc, char** argv) {
     auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\nDepthOfField\n");
     if (!line) return 0;
     checkRenderSettings(o.render);
-    if (o.render.ambientBounces > 0 && o.render.ambientDivisions > 64)
-        warn("no irradiance cache yet: -ab " + std::to_string(o.render.ambientBounces) + " path-traces " +
+    if (o.render.ambientBounces > 0 && o.render.ambientAccuracy == 0 && o.render.ambientDivisions > 64)
+        warn("-aa 0: -ab " + std::to_string(o.render.ambientBounces) + " path-traces " +
              std::to_string(o.render.ambientDivisions) + " paths (-ad) from every pixel traced, a long run; "
-             "-ad 16 to 64 gives a noisier picture much sooner");
+             "the irradiance cache (-aa > 0) or -ad 16 to 64 give a picture much sooner");
     if (o.sequenceStart < 0) throw Error("bad sequence start " + std::to_string(o.sequenceStart));
     if (o.sequenceStart > 0 && !o.cameraPath.empty()) throw Error("-S and -path are exclusive");
     if (o.sequenceStart > 0 && std::find(line->scene.begin(), line->scene.end(), "-") != line->scene.end())

@@ -1,6 +1,5 @@
 // rtrace: values along rays read from standard input, as Radiance's rtrace (see man/rtrace.1).
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include <bit>
 #include <cstdio>
@@ -142,7 +141,7 @@ int run(int argc, char** argv) {
         records.assign(rays.size(), RayRecord{});
         trees.assign(writer.tracing() ? rays.size() : 0, RayTree{{}, writer.tracesShadowRays()});
         uint64_t base = uint64_t(count - long(rays.size()));
-        tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+        integrator.forEach(rays.size(), [&](size_t i) {
             const InputRay& in = rays[i];
             if (in.zero) return;
             RayTree* tree = trees.empty() ? nullptr : &trees[i];

@@ -14,8 +14,9 @@ namespace brume {
 
 using namespace integrator_detail;
 
-Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
-    : scene_(scene), settings_(settings) {
+Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
+                       std::shared_ptr<IrradianceCache> cache)
+    : scene_(scene), settings_(settings), cache_(std::move(cache)) {
     static std::atomic<uint64_t> instances{0};
     id_ = ++instances;
     runSeed_ = settings.randomSampling
@@ -24,7 +25,11 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings)
     const SceneGeometry& g = scene.geometry();
     double size = g.boundsMin().x <= g.boundsMax().x ? glm::length(g.boundsMax() - g.boundsMin()) : 1.0;
     epsilon_ = 1e-7 * size;
+    if (!cache_ && settings.ambientBounces > 0 && settings.ambientAccuracy > 0 && settings.ambientDivisions > 0)
+        cache_ = std::make_shared<IrradianceCache>(recordShape(scene, settings));
 }
+
+Integrator::~Integrator() = default;
 
 // Rays given on input may start exactly on a surface (a sensor on the floor); like Radiance, which ignores
 // hits closer than 1e-6, ignore those, but relative to the scene's and the point's size.
@@ -43,7 +48,7 @@ uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ m
 
 RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, double maxDistance,
                             RayTree* tree) const {
-    Context ctx{Random(seedFor(index), index), tree};
+    Context ctx{Random(seedFor(index), index), tree, 0, currentVisit()};
     RayRecord rec;
     rec.point = org;
     Ray ray{org, glm::normalize(dir)};
@@ -54,7 +59,7 @@ RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, 
 }
 
 RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t index, RayTree* tree) const {
-    Context ctx{Random(seedFor(index), index), tree};
+    Context ctx{Random(seedFor(index), index), tree, 0, currentVisit()};
     dvec3 n = glm::normalize(normal);
     RayRecord rec;
     rec.point = p;
@@ -69,7 +74,7 @@ RayRecord Integrator::irradiance(const dvec3& p, const dvec3& normal, uint64_t i
 RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64_t index, RayTree* tree) const {
     Ray ray{org, glm::normalize(dir)};
     ray.tmin = primaryTmin(org);
-    Context ctx{Random(seedFor(index), index), tree};
+    Context ctx{Random(seedFor(index), index), tree, 0, currentVisit()};
     RayRecord rec;
     rec.point = org;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
@@ -472,9 +477,10 @@ Spectrum Integrator::general(const Shading& sh, const GeneralLobe& lobe, const S
     return s->weight * sampledRadiance(sh, surface, s->dir, s->pdf, state, child, ctx) * boost;
 }
 
-// Diffuse interreflection on each side with a diffuse coefficient: -ad cosine-distributed, stratified
-// paths at the first bounce and one after it, for -ab bounces; beyond them Radiance's -av value. Sources
-// these paths meet are left out: next-event estimation counted them.
+// Diffuse interreflection on each side with a diffuse coefficient: from the irradiance cache, or by path
+// tracing (-ad cosine-distributed, stratified paths at the first bounce and one after it; one where the
+// cache has no record yet deeper in a path), for -ab bounces; beyond them Radiance's -av value, or with the cache, paths
+// ended by Russian roulette. Sources these paths meet are left out: next-event estimation counted them.
 Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                              Context& ctx) const {
     Spectrum sum(0.f);
@@ -484,6 +490,11 @@ Spectrum Integrator::ambient(const Shading& sh, const Lobes& lobes, const Surfac
         bool beyond = state.ambientLevel >= settings_.ambientBounces;
         if ((beyond && !bounceTail()) || settings_.ambientDivisions <= 0) {
             sum += coef * settings_.ambientValue;
+            continue;
+        }
+        Spectrum cached;
+        if (!beyond && cachedAmbient(sh, transmit ? -sh.normal : sh.normal, surface, coef, state, ctx, cached)) {
+            sum += coef * cached * float(1 / kPi);
             continue;
         }
         PathState child;

@@ -2,9 +2,12 @@
 // estimation of every source with multiple importance sampling, diffuse interreflection by path tracing
 // (-ad paths at the first bounce, one after it, -ab bounces), specular and glossy rays, Russian roulette.
 #pragma once
+#include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "cache/irradiance_cache.h"
 #include "integrator/render_scene.h"
 #include "integrator/settings.h"
 #include "pattern/pattern_evaluator.h"
@@ -40,9 +43,26 @@ struct RayTree {
     bool withShadowRays = false;  // -oT
 };
 
+// The cache's record shape for a scene: -acache, -aa, and radius bounds from the scene's size and -ar.
+RecordShape recordShape(const RenderScene& scene, const RenderSettings& settings);
+
 class Integrator {
 public:
-    Integrator(const RenderScene& scene, const RenderSettings& settings);
+    // `cache`: the irradiance cache to look records up in and add them to (shared with other integrators
+    // of the same scene and settings, e.g. the frames of a sequence); by default a new one when -ab and -aa
+    // are positive.
+    Integrator(const RenderScene& scene, const RenderSettings& settings,
+               std::shared_ptr<IrradianceCache> cache = nullptr);
+    ~Integrator();
+
+    // Runs work items 0 … count-1 (rays, pixels, sensors: each calls trace, irradiance or irradianceAtHit
+    // and keeps the result) on all threads. With the irradiance cache (-ab > 0, -aa > 0), in passes: every
+    // pass looks records up in a cache that does not change while it runs; an item that found no record
+    // where it needed one runs again in the next pass, after the records asked for are made. Records are
+    // made in an order fixed by the items' order, not by the threads, so results do not depend on -n.
+    void forEach(size_t count, const std::function<void(size_t)>& item) const;
+    // The irradiance cache, or null when -ab or -aa is 0.
+    const std::shared_ptr<IrradianceCache>& cache() const { return cache_; }
 
     // Radiance arriving at org from direction dir (the ray's value). `index` seeds the ray's samples;
     // maxDistance > 0 limits how far the ray looks (rtrace -ld).
@@ -62,6 +82,14 @@ public:
 private:
     struct PathState;
     struct Context;
+    struct CacheVisit;
+    // The visit of the work item this thread runs in forEach (null outside it).
+    static CacheVisit*& currentVisit();
+    void makeRecords(const std::vector<RecordRequest>& requests) const;
+    IrradianceRecord computeRecord(const RecordRequest& request, CacheVisit& visit) const;
+    int recordDivisions(const RecordRequest& request) const;
+    bool cachedAmbient(const Shading& sh, const dvec3& normal, const SurfaceId& surface, const Spectrum& coef,
+                       const PathState& state, Context& ctx, Spectrum& irradiance) const;
     Spectrum radiance(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                       Spectrum* misEmission) const;
     Spectrum radianceAlong(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
@@ -124,6 +152,8 @@ private:
 
     const RenderScene& scene_;
     RenderSettings settings_;
+    std::shared_ptr<IrradianceCache> cache_;
+    mutable uint64_t passes_ = 0;  // forEach calls so far: they seed the records their items ask for
     uint64_t runSeed_;
     uint64_t id_;     // tells this integrator's per-thread pattern state from earlier integrators'
     double epsilon_;  // offset for sensor points off their surface, relative to the scene size

@@ -83,10 +83,21 @@ struct Integrator::PathState {
     }
 };
 
+// What a work item or a record's computation learns from the irradiance cache: where records were missing.
+struct Integrator::CacheVisit {
+    bool waits = false;   // a work item waits for the records it misses (and runs again); records' rays do not
+    bool missed = false;  // it missed one
+    uint64_t key = 0;     // seeds the requests: key and count
+    uint64_t count = 0;
+    std::vector<RecordRequest> requests;
+};
+
 struct Integrator::Context {
     Random rng;
     RayTree* tree = nullptr;
     int depth = 0;  // of the ray being traced in its tree
+    CacheVisit* visit = nullptr;
 };
+
 
 }  // namespace brume

@@ -36,10 +36,17 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addColor(t, "-av", s.ambientValue, "ambient value beyond the last bounce");
     addIntOption(t, "-aw", s.ambientWeight, "ambient value weight");
     addIntOption(t, "-ab", s.ambientBounces, "ambient bounces (diffuse interreflections, exactly)");
-    addRealOption(t, "-aa", s.ambientAccuracy, "ambient accuracy (0: path tracing; cache: later)");
+    addRealOption(t, "-aa", s.ambientAccuracy, "ambient accuracy: the irradiance cache's relative error (0: path tracing)");
     addIntOption(t, "-ar", s.ambientResolution, "ambient resolution");
     addIntOption(t, "-ad", s.ambientDivisions, "ambient divisions: paths at the first bounce");
     addIntOption(t, "-as", s.ambientSupersamples, "ambient super-samples");
+    t.add("-acache", 1, "irradiance cache records: adaptive (Brume's) or classic (Ward-Heckbert's)",
+          [&s](const auto& a) {
+              if (a[0] == "adaptive") s.cacheKind = RecordShape::Kind::Adaptive;
+              else if (a[0] == "classic") s.cacheKind = RecordShape::Kind::Classic;
+              else throw Error("-acache: '" + a[0] + "' is neither adaptive nor classic");
+          },
+          [&s] { return std::string(s.cacheKind == RecordShape::Kind::Classic ? "classic" : "adaptive"); });
     t.addUnsupported("-af", 1, "ambient cache file");
     t.addUnsupported("-ae", 1, "ambient exclude modifier");
     t.addUnsupported("-ai", 1, "ambient include modifier");
@@ -97,8 +104,6 @@ std::optional<CommandLine> parseCommandLine(int argc, char** argv, const OptionT
 void checkRenderSettings(const RenderSettings& s) {
     if (s.maxReflections <= 0 && !(s.minWeight > 0))
         throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
-    if (s.ambientBounces > 0 && s.ambientAccuracy > 0)
-        warnOnce("no irradiance cache yet: -aa > 0 path-traces, and continues past -ab by Russian roulette as Radiance's cache carries further bounces (-aa 0: exactly -ab bounces)");
 }
 
 }  // namespace brume

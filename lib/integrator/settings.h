@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "cache/record_shape.h"
 #include "material/material.h"
 #include "spectrum/spectrum.h"
 
@@ -11,9 +12,10 @@ namespace brume {
 struct RenderSettings {
     int ambientBounces = 0;          // -ab: diffuse interreflections, exactly
     int ambientDivisions = 1024;     // -ad: paths per shading point at the first bounce
-    int ambientSupersamples = 512;   // -as (irradiance cache, later)
-    double ambientAccuracy = 0.1;    // -aa (irradiance cache, later; 0 = path tracing)
-    int ambientResolution = 256;     // -ar (irradiance cache, later)
+    int ambientSupersamples = 512;   // -as: extra samples where a record's hemisphere varies most
+    double ambientAccuracy = 0.1;    // -aa: the irradiance cache's relative error (0: no cache, path tracing)
+    int ambientResolution = 256;     // -ar: the scene's size over the smallest record radius
+    RecordShape::Kind cacheKind = RecordShape::Kind::Adaptive;  // -acache adaptive|classic
     int ambientWeight = 0;           // -aw
     Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce
     int maxReflections = -10;        // -lr: > 0 hard limit; ≤ 0 Russian roulette past |lr| reflections

@@ -1,7 +1,5 @@
 #include "render/picture_renderer.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -82,20 +80,31 @@ private:
         depth_[i] = std::isfinite(d) ? float(d) : 0.f;
     }
 
+    // Traces the pixels listed, by the integrator's passes (its cache's records are made between them).
+    void traceEach(const std::vector<std::pair<int, int>>& pixels) {
+        integrator_.forEach(pixels.size(), [&](size_t i) { trace(pixels[i].first, pixels[i].second); });
+    }
+
+    // A band of rows at a time, for the progress report.
     void traceAll() {
-        tbb::parallel_for(0, h_, [&](int row) {
-            for (int x = 0; x < w_; ++x) trace(x, row);
-            if (progress_) progress_->advance(w_, w_);
-        });
+        for (int top = 0; top < h_; top += kBand) {
+            int bottom = std::min(h_, top + kBand);
+            std::vector<std::pair<int, int>> pixels;
+            for (int row = top; row < bottom; ++row)
+                for (int x = 0; x < w_; ++x) pixels.push_back({x, row});
+            traceEach(pixels);
+            if (progress_) progress_->advance(long(pixels.size()), long(pixels.size()));
+        }
     }
 
     // First pass on the grid; tiles whose corners differ are traced whole, the others interpolated.
     void adaptive() {
         const std::vector<int>&xs = xs_, &ys = ys_;
-        tbb::parallel_for(size_t(0), ys.size(), [&](size_t j) {
-            for (int x : xs) trace(x, ys[j]);
-            if (progress_) progress_->advance(long(xs.size()), long(xs.size()));
-        });
+        std::vector<std::pair<int, int>> grid;
+        for (int y : ys)
+            for (int x : xs) grid.push_back({x, y});
+        traceEach(grid);
+        if (progress_) progress_->advance(long(grid.size()), long(grid.size()));
         std::vector<char> busy((xs.size() - 1) * (ys.size() - 1));
         for (size_t j = 0; j + 1 < ys.size(); ++j)
             for (size_t i = 0; i + 1 < xs.size(); ++i) {
@@ -121,15 +130,19 @@ private:
             if (i > 0 && j > 0 && x == xs[i] && row == ys[j]) b = b || busy[(j - 1) * nx + i - 1];
             return b;
         };
-        tbb::parallel_for(0, h_, [&](int row) {
-            long samples = 0;
-            for (int x = 0; x < w_; ++x) {
-                if (traced_[at(x, row)]) continue;
-                if (isBusy(x, row)) trace(x, row), ++samples;
-                else interpolate(x, row, xs[tileOfX[x]], xs[tileOfX[x] + 1], ys[tileOfY[row]], ys[tileOfY[row] + 1]);
-            }
-            if (progress_) progress_->advance(w_, samples);
-        });
+        for (int top = 0; top < h_; top += kBand) {
+            int bottom = std::min(h_, top + kBand);
+            std::vector<std::pair<int, int>> busyPixels;
+            for (int row = top; row < bottom; ++row)
+                for (int x = 0; x < w_; ++x)
+                    if (!traced_[at(x, row)] && isBusy(x, row)) busyPixels.push_back({x, row});
+            traceEach(busyPixels);
+            for (int row = top; row < bottom; ++row)
+                for (int x = 0; x < w_; ++x)
+                    if (!traced_[at(x, row)])
+                        interpolate(x, row, xs[tileOfX[x]], xs[tileOfX[x] + 1], ys[tileOfY[row]], ys[tileOfY[row] + 1]);
+            if (progress_) progress_->advance(long(w_) * (bottom - top), long(busyPixels.size()));
+        }
     }
 
     // Bilinear between the tile's traced corners (x0, y0)-(x1, y1).
@@ -151,6 +164,7 @@ private:
     const View& view_;
     const PictureSettings& s_;
     ProgressMeter* progress_;
+    static constexpr int kBand = 32;  // rows traced together
     int w_, h_;
     RenderedPicture out_;
     std::vector<float> depth_;

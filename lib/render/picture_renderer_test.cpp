@@ -118,25 +118,23 @@ TEST(PictureRenderer, AdaptiveSamplingInterpolatesOnlyWhereSamplesAgree) {
     EXPECT_LT(same, int(full.picture.pixels.size()));      // the flat floor and the black sky are not
 }
 
-// -u-: the same picture whatever the number of threads, with jitter on.
+// -u-: the same picture whatever the number of threads, with jitter on, with the irradiance cache or without.
 TEST(PictureRenderer, SamePictureOnAnyNumberOfThreads) {
     TestScene t(kRoom);
     RenderSettings s = fixedSeed();
     s.ambientBounces = 1, s.ambientDivisions = 16;
-    Integrator integrator(t.render, s);
     PictureSettings p;
     p.xres = p.yres = 24;
     fitResolution(frontView(), p);
-    std::vector<float> one, two;
-    {
-        tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
-        one = renderPicture(integrator, frontView(), p).picture.pixels;
-    }
-    {
-        tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
-        two = renderPicture(integrator, frontView(), p).picture.pixels;
-    }
-    EXPECT_EQ(one, two);
+    // Each with its own irradiance cache (a second picture by one integrator reuses the first's records).
+    auto render = [&](int threads) {
+        tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
+        Integrator integrator(t.render, s);
+        return renderPicture(integrator, frontView(), p).picture.pixels;
+    };
+    EXPECT_EQ(render(1), render(2));
+    s.ambientAccuracy = 0;  // path tracing
+    EXPECT_EQ(render(1), render(2));
 }
 
 // A hemispherical fisheye sees nothing beyond 90° off axis: the corners of its square picture stay black;

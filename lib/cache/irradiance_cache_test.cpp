@@ -1,0 +1,119 @@
+// Lookups, acceptance of requests and the splotch control of the irradiance cache, on hand-made records.
+#include "cache/irradiance_cache.h"
+
+#include <gtest/gtest.h>
+
+using namespace brume;
+
+namespace {
+
+RecordShape shape() {
+    RecordShape s;
+    s.accuracy = 0.1;
+    s.minRadius = 0.01;
+    s.maxRadius = 1;
+    return s;
+}
+
+IrradianceRecord record(const dvec3& p, float e, float r0, float r1, int level = 0, float gradK1 = 0) {
+    IrradianceRecord r;
+    r.point = p;
+    r.normal = dvec3(0, 0, 1);
+    r.axis = dvec3(1, 0, 0);
+    r.radius[0] = r0, r.radius[1] = r1;
+    r.level = level;
+    r.setField(IrradianceRecord::kIrradiance, Spectrum(e));
+    for (auto f : {IrradianceRecord::kAlongK1, IrradianceRecord::kAlongK2, IrradianceRecord::kTiltK1,
+                   IrradianceRecord::kTiltK2})
+        r.setField(f, Spectrum(0.f));
+    r.setField(IrradianceRecord::kAlongK1, Spectrum(gradK1));
+    return r;
+}
+
+}  // namespace
+
+TEST(IrradianceCache, LooksUpInsideTheEllipseOnly) {
+    IrradianceCache cache(shape());
+    std::vector<IrradianceRecord> records{record(dvec3(0), 2, 0.1f, 0.4f)};
+    cache.insert(records);
+    Spectrum e;
+    ASSERT_TRUE(cache.lookup(dvec3(0), dvec3(0, 0, 1), 0, e));
+    EXPECT_FLOAT_EQ(e[0], 2);
+    EXPECT_TRUE(cache.lookup(dvec3(0, 0.3, 0), dvec3(0, 0, 1), 0, e));    // along the long axis
+    EXPECT_FALSE(cache.lookup(dvec3(0.15, 0, 0), dvec3(0, 0, 1), 0, e));  // beyond the short one
+    EXPECT_FALSE(cache.lookup(dvec3(0, 0, -0.05), dvec3(0, 0, 1), 0, e));  // behind its plane
+    EXPECT_FALSE(cache.lookup(dvec3(0), glm::normalize(dvec3(1, 0, 1)), 0, e));  // 45°: beyond 10° + ε
+    EXPECT_TRUE(cache.lookup(dvec3(0), glm::normalize(dvec3(0.1, 0, 1)), 0, e));
+    EXPECT_LT(e[0], 2);  // the second-order tilt term: E(1 − α²/2)
+}
+
+TEST(IrradianceCache, DeeperRecordsServeOnlyDeeperLookups) {
+    IrradianceCache cache(shape());
+    cache.insert({record(dvec3(0), 1, 0.2f, 0.2f, 2)});
+    Spectrum e;
+    EXPECT_FALSE(cache.lookup(dvec3(0), dvec3(0, 0, 1), 1, e));
+    EXPECT_TRUE(cache.lookup(dvec3(0), dvec3(0, 0, 1), 2, e));
+    EXPECT_TRUE(cache.lookup(dvec3(0), dvec3(0, 0, 1), 3, e));
+}
+
+// Extrapolation by the gradient, and METHOD.md's weight: (|RP'|/|RP| − 1) at equal normals.
+TEST(IrradianceCache, InterpolatesExtrapolationsByTheZoneWeight) {
+    IrradianceCache cache(shape());
+    cache.insert({record(dvec3(0), 1, 1, 1, 0, 2.f), record(dvec3(1, 0, 0), 4, 1, 1)});
+    Spectrum e;
+    ASSERT_TRUE(cache.lookup(dvec3(0.25, 0, 0), dvec3(0, 0, 1), 0, e));
+    double first = 1 + 2 * 0.25, w1 = 1 / 0.25 - 1, w2 = 1 / 0.75 - 1;
+    EXPECT_NEAR(e[0], (w1 * first + w2 * 4) / (w1 + w2), 1e-5);
+    // The gradient's change is clamped to the value itself: never negative, at most double.
+    IrradianceCache steep(shape());
+    steep.insert({record(dvec3(0), 1, 1, 1, 0, -10.f)});
+    ASSERT_TRUE(steep.lookup(dvec3(0.5, 0, 0), dvec3(0, 0, 1), 0, e));
+    EXPECT_EQ(e[0], 0);
+}
+
+// Requests wait until enough misses in their region pay for a record; one record per region at a time.
+TEST(IrradianceCache, AcceptsOneRequestPerRegionOnceMissesPayForIt) {
+    IrradianceCache cache(shape());
+    std::vector<RecordRequest> requests;
+    for (int i = 0; i < 5; ++i) requests.push_back({dvec3(0.01 * i, 0, 0), dvec3(0, 0, 1), {}, 1, 1, uint64_t(i)});
+    auto three = [](const RecordRequest&) { return 3; };
+    std::vector<RecordRequest> accepted = cache.accept(requests, three);
+    ASSERT_EQ(accepted.size(), 1u);
+    EXPECT_EQ(accepted[0].key, 0u);  // the region's first
+    // Then the region counts afresh.
+    EXPECT_TRUE(cache.accept({requests[0], requests[1]}, three).empty());
+    EXPECT_EQ(cache.accept({requests[2]}, three).size(), 1u);
+    // Where a record now covers the point, nothing is accepted.
+    cache.insert({record(dvec3(0), 1, 0.5f, 0.5f, 1)});
+    EXPECT_TRUE(cache.accept(requests, [](const RecordRequest&) { return 1; }).empty());
+}
+
+// Two records of one bounce that disagree beyond twice the accuracy at each other's points shrink apart.
+TEST(IrradianceCache, DisagreeingRecordsShrinkSoNeitherSpeaksForTheOther) {
+    IrradianceCache cache(shape());
+    cache.insert({record(dvec3(0), 1, 0.5f, 0.5f)});
+    cache.insert({record(dvec3(0.3, 0, 0), 2, 0.5f, 0.5f)});
+    EXPECT_LT(cache.record(0).radius[0], 0.31f);
+    EXPECT_LT(cache.record(1).radius[0], 0.31f);
+    // Agreeing ones keep their zones.
+    IrradianceCache calm(shape());
+    calm.insert({record(dvec3(0), 1, 0.5f, 0.5f)});
+    calm.insert({record(dvec3(0.3, 0, 0), 1.05f, 0.5f, 0.5f)});
+    EXPECT_EQ(calm.record(0).radius[0], 0.5f);
+    EXPECT_EQ(calm.record(1).radius[0], 0.5f);
+}
+
+// Many records through the BVH: a lookup finds exactly the records whose zones hold the point.
+TEST(IrradianceCache, IndexFindsTheSameRecordsAsAScan) {
+    IrradianceCache cache(shape());
+    std::vector<IrradianceRecord> records;
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 40; ++j) records.push_back(record(dvec3(0.1 * i, 0.1 * j, 0), float(1 + i), 0.07f, 0.07f));
+    cache.insert(records);
+    Spectrum e;
+    for (int i = 0; i < 40; ++i) {
+        ASSERT_TRUE(cache.lookup(dvec3(0.1 * i, 0.05, 0), dvec3(0, 0, 1), 0, e));
+        EXPECT_FLOAT_EQ(e[0], float(1 + i));
+    }
+    EXPECT_FALSE(cache.lookup(dvec3(-0.5, 0, 0), dvec3(0, 0, 1), 0, e));
+}
