@@ -1,6 +1,7 @@
 // Helpers for tests that build scenes from .rad text and compute with the library.
 #pragma once
 #include <cstdlib>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -30,6 +31,16 @@ struct TestScene {
 inline std::string renderSceneError(const std::string& text) {
     try {
         TestScene s(text);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+// The message of the Error that `f` throws, or "no error".
+inline std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
     } catch (const Error& e) {
         return e.what();
     }

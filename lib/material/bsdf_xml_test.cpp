@@ -5,10 +5,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scene_text.h"
 #include "util/error.h"
 
 namespace brume {
 namespace {
+
+using test::errorOf;
 
 const std::string kFile = std::string(BRUME_TEST_DATA) + "/bsdf/prism_quarter.xml";
 
@@ -53,14 +56,6 @@ protected:
                "</WavelengthDataDirection><ColumnAngleBasis>Two</ColumnAngleBasis><RowAngleBasis>Two"
                "</RowAngleBasis>\n<ScatteringData>" +
                data + "</ScatteringData></WavelengthDataBlock></WavelengthData>\n";
-    }
-    std::string errorOf(const std::function<void()>& f) {
-        try {
-            f();
-        } catch (const Error& e) {
-            return e.what();
-        }
-        return "no error";
     }
 };
 

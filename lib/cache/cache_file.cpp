@@ -1,0 +1,306 @@
+#include "cache/cache_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <bit>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+#include "util/error.h"
+
+namespace brume {
+
+// Records are copied to and from the file as they are in memory.
+static_assert(std::endian::native == std::endian::little && std::numeric_limits<double>::is_iec559,
+              "cache files hold little-endian IEEE 754 numbers");
+
+namespace {
+
+constexpr std::string_view kMagic = "#?BRUME_IRRADIANCE_CACHE";
+constexpr std::string_view kFormat = "brume_irradiance_cache 1";
+constexpr char kBlockTag[4] = {'I', 'R', 'C', 'B'};
+constexpr size_t kHeadSize = 16;
+// A header is a few hundred bytes; one without its empty line within this many is not a cache file's.
+constexpr size_t kMaxHeaderSize = 1 << 16;
+
+// Open file description locks (Linux) rather than F_SETLKW's per-process ones: two CacheFile objects of one
+// process on the same file then exclude each other, and closing one does not drop the other's lock.
+#ifdef F_OFD_SETLKW
+constexpr int kLockWait = F_OFD_SETLKW;
+#else
+constexpr int kLockWait = F_SETLKW;
+#endif
+
+std::string systemReason() { return std::strerror(errno); }
+
+// An exclusive lock on the whole file, for as long as the object lives.
+class FileLock {
+public:
+    FileLock(int fd, const std::string& path) : fd_(fd) {
+        if (!set(F_WRLCK)) throw Error("cannot lock cache file " + path + ": " + systemReason());
+    }
+    FileLock(const FileLock&) = delete;
+    FileLock& operator=(const FileLock&) = delete;
+    ~FileLock() { set(F_UNLCK); }
+
+private:
+    bool set(short type) {
+        struct flock lock {};
+        lock.l_type = type;
+        lock.l_whence = SEEK_SET;
+        int status;
+        while ((status = fcntl(fd_, kLockWait, &lock)) != 0 && errno == EINTR) {}
+        return status == 0;
+    }
+    int fd_;
+};
+
+uint64_t fileSize(int fd, const std::string& path) {
+    struct stat s;
+    if (fstat(fd, &s) != 0) throw Error("cannot read cache file " + path + ": " + systemReason());
+    return uint64_t(s.st_size);
+}
+
+// Reads up to `size` bytes at `offset`; fewer only at the end of the file.
+size_t readAt(int fd, const std::string& path, void* data, size_t size, uint64_t offset) {
+    size_t done = 0;
+    while (done < size) {
+        ssize_t n = pread(fd, static_cast<char*>(data) + done, size - done, off_t(offset + done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw Error("cannot read cache file " + path + ": " + systemReason());
+        if (n == 0) break;
+        done += size_t(n);
+    }
+    return done;
+}
+
+// Writes `bytes` at `offset` and syncs them. On failure cuts the file back to `offset`, so that no partial
+// block remains (were that to fail too, the next reader drops it as torn), and throws Error.
+void writeAt(int fd, const std::string& path, std::string_view bytes, uint64_t offset) {
+    std::string reason;
+    for (size_t done = 0; done < bytes.size() && reason.empty();) {
+        ssize_t n = pwrite(fd, bytes.data() + done, bytes.size() - done, off_t(offset + done));
+        if (n > 0)
+            done += size_t(n);
+        else if (n == 0 || errno != EINTR)
+            reason = n == 0 ? "no space written" : systemReason();
+    }
+    if (reason.empty() && fsync(fd) == 0) return;
+    if (reason.empty()) reason = systemReason();
+    [[maybe_unused]] int ignored = ftruncate(fd, off_t(offset));
+    throw Error("cannot write cache file " + path + ": " + reason);
+}
+
+std::string headerText(const CacheIdentity& id) {
+    if (id.scene.find('\n') != std::string::npos || id.options.find('\n') != std::string::npos || id.channels < 1)
+        throw std::invalid_argument("cache identity with a newline or no channels");
+    return std::string(kMagic) + "\nFORMAT=" + std::string(kFormat) + "\nSCENE=" + id.scene +
+           "\nOPTIONS=" + id.options + "\nCHANNELS=" + std::to_string(id.channels) + "\n\n";
+}
+
+[[noreturn]] void corrupted(const std::string& path, uint64_t offset, const std::string& why) {
+    throw Error(path + ": byte " + std::to_string(offset) + ": " + why + "; remove it or use another -af file");
+}
+
+bool finite(const dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool unit(const dvec3& v) { return std::abs(glm::length(v) - 1) < 1e-6; }
+
+// Why a record may not be cached (its numbers would reach the renderer), or null.
+const char* invalidity(const IrradianceRecord& r, int channels) {
+    if (r.values.size() != size_t(IrradianceRecord::kFields) * channels) return "wrong number of values";
+    if (!finite(r.point) || !finite(r.normal) || !finite(r.axis)) return "a coordinate is not finite";
+    if (!unit(r.normal) || !unit(r.axis)) return "its normal or axis is not a unit vector";
+    for (float radius : r.radius)
+        if (!(radius > 0) || !std::isfinite(radius)) return "a radius is not positive";
+    if (r.level < 0) return "its level is negative";
+    for (float v : r.values)
+        if (!std::isfinite(v)) return "a value is not finite";
+    return nullptr;
+}
+
+template <class T>
+void put(char*& p, T value) {
+    std::memcpy(p, &value, sizeof value);
+    p += sizeof value;
+}
+
+template <class T>
+T get(const char*& p) {
+    T value;
+    std::memcpy(&value, p, sizeof value);
+    p += sizeof value;
+    return value;
+}
+
+void putRecord(char*& p, const IrradianceRecord& r) {
+    for (const dvec3* v : {&r.point, &r.normal, &r.axis})
+        for (int i = 0; i < 3; ++i) put(p, (*v)[i]);
+    put(p, r.radius[0]);
+    put(p, r.radius[1]);
+    put(p, int32_t(r.level));
+    for (float v : r.values) put(p, v);
+}
+
+IrradianceRecord getRecord(const char*& p, int channels) {
+    IrradianceRecord r;
+    for (dvec3* v : {&r.point, &r.normal, &r.axis})
+        for (int i = 0; i < 3; ++i) (*v)[i] = get<double>(p);
+    r.radius[0] = get<float>(p);
+    r.radius[1] = get<float>(p);
+    r.level = get<int32_t>(p);
+    r.values.resize(size_t(IrradianceRecord::kFields) * channels);
+    for (float& v : r.values) v = get<float>(p);
+    return r;
+}
+
+uint32_t crc(const char* data, size_t size) {
+    return uint32_t(crc32_z(crc32_z(0, nullptr, 0), reinterpret_cast<const Bytef*>(data), size));
+}
+
+// The block head: its tag, the record count, the records' CRC and the CRC of these first 12 bytes.
+struct BlockHead {
+    uint32_t count = 0, recordsCrc = 0;
+};
+
+void putHead(char* p, const BlockHead& head) {
+    char* start = p;
+    std::memcpy(p, kBlockTag, 4);
+    p += 4;
+    put(p, head.count);
+    put(p, head.recordsCrc);
+    put(p, crc(start, 12));
+}
+
+// The head at `p`, or nothing if it is not one (a damaged file).
+std::optional<BlockHead> getHead(const char* p) {
+    const char* start = p;
+    if (std::memcmp(p, kBlockTag, 4) != 0) return std::nullopt;
+    p += 4;
+    BlockHead head;
+    head.count = get<uint32_t>(p);
+    head.recordsCrc = get<uint32_t>(p);
+    if (get<uint32_t>(p) != crc(start, 12)) return std::nullopt;
+    return head;
+}
+
+}  // namespace
+
+CacheFile::CacheFile(std::string path, CacheIdentity identity)
+    : path_(std::move(path)), identity_(std::move(identity)),
+      recordSize_(9 * sizeof(double) + 2 * sizeof(float) + sizeof(int32_t) +
+                  size_t(IrradianceRecord::kFields) * identity_.channels * sizeof(float)) {
+    std::string header = headerText(identity_);
+    fd_ = open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd_ < 0) throw Error("cannot open cache file " + path_ + ": " + systemReason());
+    try {
+        // Under the lock, so that of two processes creating the file one writes the header and the
+        // other finds it whole.
+        FileLock lock(fd_, path_);
+        if (fileSize(fd_, path_) == 0) {
+            writeAt(fd_, path_, header, 0);
+            offset_ = header.size();
+        } else {
+            checkHeader();
+        }
+    } catch (...) {
+        close(fd_);
+        throw;
+    }
+}
+
+CacheFile::~CacheFile() { close(fd_); }
+
+void CacheFile::checkHeader() {
+    std::string text(kMaxHeaderSize, '\0');
+    text.resize(readAt(fd_, path_, text.data(), text.size(), 0));
+    size_t end = text.find("\n\n");
+    if (!text.starts_with(std::string(kMagic) + "\n") || end == std::string::npos)
+        corrupted(path_, 0, "not a Brume irradiance cache file");
+    std::map<std::string, std::string, std::less<>> fields;
+    for (size_t line = kMagic.size() + 1; line <= end; line = text.find('\n', line) + 1) {
+        std::string_view l(text.data() + line, text.find('\n', line) - line);
+        if (size_t equals = l.find('='); equals != l.npos)
+            fields[std::string(l.substr(0, equals))] = l.substr(equals + 1);
+    }
+    auto refuse = [&](const std::string& what) {
+        throw Error("cache file " + path_ + " " + what + "; remove it or use another -af file");
+    };
+    if (fields["FORMAT"] != kFormat) refuse("has another format (FORMAT=" + fields["FORMAT"] + ")");
+    if (fields["SCENE"] != identity_.scene)
+        refuse("was made for another scene (its SCENE= differs: the scene or a file it reads has changed)");
+    if (fields["OPTIONS"] != identity_.options)
+        refuse("was made with other options (\"" + fields["OPTIONS"] + "\", now \"" + identity_.options + "\")");
+    if (fields["CHANNELS"] != std::to_string(identity_.channels))
+        refuse("holds values of " + fields["CHANNELS"] + " channels, not " + std::to_string(identity_.channels));
+    offset_ = end + 2;
+}
+
+void CacheFile::catchUp() {
+    uint64_t size = fileSize(fd_, path_);
+    while (offset_ < size) {
+        char headBytes[kHeadSize];
+        size_t got = readAt(fd_, path_, headBytes, kHeadSize, offset_);
+        std::optional<BlockHead> head = got == kHeadSize ? getHead(headBytes) : std::nullopt;
+        if (got == kHeadSize && !head) corrupted(path_, offset_, "damaged cache block (no block head)");
+        uint64_t recordsSize = head ? uint64_t(head->count) * recordSize_ : 0;
+        if (!head || recordsSize > size - offset_ - kHeadSize) {
+            // A writer died mid-append: writers hold the lock we hold until their block is whole.
+            warn(path_ + ": dropping the incomplete block at byte " + std::to_string(offset_) +
+                 " (a process stopped while writing it)");
+            if (ftruncate(fd_, off_t(offset_)) != 0 || fsync(fd_) != 0)
+                throw Error("cannot repair cache file " + path_ + ": " + systemReason());
+            return;
+        }
+        std::string records(recordsSize, '\0');
+        readAt(fd_, path_, records.data(), records.size(), offset_ + kHeadSize);
+        if (crc(records.data(), records.size()) != head->recordsCrc)
+            corrupted(path_, offset_, "damaged cache block (its checksum does not match its records)");
+        std::vector<IrradianceRecord> block;
+        const char* p = records.data();
+        for (uint32_t i = 0; i < head->count; ++i) {
+            block.push_back(getRecord(p, identity_.channels));
+            if (const char* why = invalidity(block.back(), identity_.channels))
+                corrupted(path_, offset_ + kHeadSize + i * recordSize_,
+                          std::string("damaged cache block (invalid record: ") + why + ")");
+        }
+        unread_.insert(unread_.end(), block.begin(), block.end());
+        offset_ += kHeadSize + recordsSize;
+    }
+}
+
+std::vector<IrradianceRecord> CacheFile::readNew() {
+    std::lock_guard guard(mutex_);
+    FileLock lock(fd_, path_);
+    catchUp();
+    return std::exchange(unread_, {});
+}
+
+void CacheFile::append(const std::vector<IrradianceRecord>& records) {
+    if (records.empty()) return;
+    std::string block(kHeadSize + records.size() * recordSize_, '\0');
+    char* p = block.data() + kHeadSize;
+    for (const IrradianceRecord& r : records) {
+        if (const char* why = invalidity(r, identity_.channels))
+            throw std::invalid_argument(std::string("cannot cache an invalid irradiance record: ") + why);
+        putRecord(p, r);
+    }
+    putHead(block.data(), {uint32_t(records.size()), crc(block.data() + kHeadSize, block.size() - kHeadSize)});
+    std::lock_guard guard(mutex_);
+    FileLock lock(fd_, path_);
+    // What others appended is read first: the file then ends at offset_, past any torn block.
+    catchUp();
+    writeAt(fd_, path_, block, offset_);
+    offset_ += block.size();
+}
+
+}  // namespace brume

@@ -1,0 +1,338 @@
+#include "cache/cache_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <thread>
+
+#include "scene_text.h"
+#include "util/error.h"
+
+namespace brume {
+namespace {
+
+namespace fs = std::filesystem;
+using test::errorOf;
+
+const CacheIdentity kIdentity{"0123456789abcdef0123456789abcdef", "-ab 2 -aa 0.1 -ad 512", 3};
+constexpr size_t kHeadSize = 16;
+constexpr size_t kRecordSize = 9 * 8 + 2 * 4 + 4 + 5 * 3 * 4;
+
+// Record `id` (a distinct point per id), with numbers that survive only an exact round trip.
+IrradianceRecord record(double id, int channels = 3) {
+    IrradianceRecord r;
+    r.point = {id, 1.0 / 3 + id, std::nextafter(id, 1e300)};
+    r.normal = glm::normalize(dvec3(std::sin(id), std::cos(id), 0.7));
+    r.axis = glm::normalize(glm::cross(r.normal, dvec3(0.3, -0.2, 0.9)));
+    r.radius[0] = float(0.1 + id * 1e-3), r.radius[1] = 0.05f;
+    r.level = int(id) % 3;
+    for (int i = 0; i < IrradianceRecord::kFields * channels; ++i) r.values.push_back(float(id) * 0.37f - float(i));
+    return r;
+}
+
+std::vector<IrradianceRecord> records(double first, int count) {
+    std::vector<IrradianceRecord> rs;
+    for (int i = 0; i < count; ++i) rs.push_back(record(first + i));
+    return rs;
+}
+
+bool sameBits(const dvec3& a, const dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expectSame(const std::vector<IrradianceRecord>& got, const std::vector<IrradianceRecord>& expected) {
+    ASSERT_EQ(got.size(), expected.size());
+    for (size_t i = 0; i < got.size(); ++i) {
+        const IrradianceRecord &a = got[i], &b = expected[i];
+        EXPECT_TRUE(sameBits(a.point, b.point) && sameBits(a.normal, b.normal) && sameBits(a.axis, b.axis)) << i;
+        EXPECT_EQ(std::memcmp(a.radius, b.radius, sizeof a.radius), 0) << i;
+        EXPECT_EQ(a.level, b.level) << i;
+        ASSERT_EQ(a.values.size(), b.values.size()) << i;
+        EXPECT_EQ(std::memcmp(a.values.data(), b.values.data(), a.values.size() * sizeof(float)), 0) << i;
+    }
+}
+
+std::string contents(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void overwrite(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
+// Each test its own file, removed afterwards.
+class CacheFileTest : public testing::Test {
+protected:
+    CacheFileTest()
+        : path_((fs::temp_directory_path() / ("brume_cache_" + std::to_string(getpid()) + "_" +
+                                              testing::UnitTest::GetInstance()->current_test_info()->name()))
+                    .string()) {
+        fs::remove(path_);
+    }
+    ~CacheFileTest() override { fs::remove(path_); }
+
+    // The file holding blocks of `sizes` records (ids from 0 on); returns where each block starts.
+    std::vector<size_t> writeBlocks(const std::vector<int>& sizes) {
+        CacheFile file(path_, kIdentity);
+        std::vector<size_t> starts;
+        double id = 0;
+        for (int n : sizes) {
+            starts.push_back(fs::file_size(path_));
+            file.append(records(id, n));
+            id += n;
+        }
+        return starts;
+    }
+
+    std::string path_;
+};
+
+TEST_F(CacheFileTest, RecordsComeBackBitExact) {
+    std::vector<IrradianceRecord> written = records(0.1, 7);
+    CacheFile(path_, kIdentity).append(written);
+    expectSame(CacheFile(path_, kIdentity).readNew(), written);
+
+    std::string single = path_ + ".mono";
+    CacheFile(single, {"s", "o", 1}).append({record(2.5, 1)});
+    expectSame(CacheFile(single, {"s", "o", 1}).readNew(), {record(2.5, 1)});
+    fs::remove(single);
+}
+
+TEST_F(CacheFileTest, NewFileStartsWithItsHeader) {
+    overwrite(path_, "");  // an empty file is taken as a new one
+    CacheFile file(path_, kIdentity);
+    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 1\n"
+                               "SCENE=0123456789abcdef0123456789abcdef\nOPTIONS=-ab 2 -aa 0.1 -ad 512\nCHANNELS=3\n\n");
+    EXPECT_TRUE(file.readNew().empty());
+    EXPECT_EQ(file.path(), path_);
+}
+
+TEST_F(CacheFileTest, ReadNewReturnsOnlyWhatOthersAppendedSinceTheLastCall) {
+    CacheFile a(path_, kIdentity);
+    a.append(records(0, 3));
+    CacheFile b(path_, kIdentity);
+    expectSame(b.readNew(), records(0, 3));
+    EXPECT_TRUE(a.readNew().empty()) << "a's own records";
+    EXPECT_TRUE(b.readNew().empty()) << "already returned";
+
+    b.append(records(10, 2));
+    a.append(records(20, 1));  // a reads b's block before appending its own, and keeps it for readNew
+    b.append(records(30, 1));
+    expectSame(a.readNew(), {record(10), record(11), record(30)});
+    expectSame(b.readNew(), {record(20)});
+}
+
+TEST_F(CacheFileTest, RefusesAFileMadeForAnotherSceneOptionsOrChannels) {
+    CacheFile(path_, kIdentity).append(records(0, 1));
+    std::string scene = errorOf([&] { CacheFile(path_, {"feedbeef", kIdentity.options, 3}); });
+    EXPECT_NE(scene.find("made for another scene"), std::string::npos) << scene;
+    std::string options = errorOf([&] { CacheFile(path_, {kIdentity.scene, "-ab 3 -aa 0.1 -ad 512", 3}); });
+    EXPECT_NE(options.find("other options (\"-ab 2 -aa 0.1 -ad 512\", now \"-ab 3 -aa 0.1 -ad 512\")"),
+              std::string::npos)
+        << options;
+    std::string channels = errorOf([&] { CacheFile(path_, {kIdentity.scene, kIdentity.options, 81}); });
+    EXPECT_NE(channels.find("values of 3 channels, not 81"), std::string::npos) << channels;
+    for (const std::string& e : {scene, options, channels}) {
+        EXPECT_NE(e.find(path_), std::string::npos) << e;
+        EXPECT_NE(e.find("remove it or use another -af file"), std::string::npos) << e;
+    }
+    // A refused file is left as it was.
+    expectSame(CacheFile(path_, kIdentity).readNew(), records(0, 1));
+}
+
+TEST_F(CacheFileTest, RefusesAFileThatIsNotACache) {
+    overwrite(path_, "void plastic red 0 0 5 1 0 0 0 0\n");
+    EXPECT_EQ(errorOf([&] { CacheFile(path_, kIdentity); }),
+              path_ + ": byte 0: not a Brume irradiance cache file; remove it or use another -af file");
+}
+
+TEST_F(CacheFileTest, ABlockCutShortIsDroppedAndTheFileRepaired) {
+    std::vector<size_t> starts = writeBlocks({2, 3});
+    std::string whole = contents(path_);
+    // Cut inside the last block's records, then inside its head.
+    for (size_t cut : {whole.size() - 10, starts[1] + 7}) {
+        overwrite(path_, whole.substr(0, cut));
+        CacheFile file(path_, kIdentity);
+        testing::internal::CaptureStderr();
+        expectSame(file.readNew(), records(0, 2));
+        std::string warning = testing::internal::GetCapturedStderr();
+        EXPECT_NE(warning.find("dropping the incomplete block at byte " + std::to_string(starts[1])),
+                  std::string::npos)
+            << warning;
+        EXPECT_EQ(fs::file_size(path_), starts[1]);
+        file.append(records(7, 1));
+        expectSame(CacheFile(path_, kIdentity).readNew(), {record(0), record(1), record(7)});
+    }
+}
+
+TEST_F(CacheFileTest, AFlippedByteIsReportedWithItsBlocksOffset) {
+    std::vector<size_t> starts = writeBlocks({2, 3, 1});
+    std::string whole = contents(path_);
+    // In the second block's records, then in its head (its count).
+    for (size_t at : {starts[1] + kHeadSize + kRecordSize + 5, starts[1] + 4}) {
+        std::string damaged = whole;
+        damaged[at] ^= 0x10;
+        overwrite(path_, damaged);
+        std::string e = errorOf([&] { CacheFile(path_, kIdentity).readNew(); });
+        EXPECT_EQ(e.find(path_ + ": byte " + std::to_string(starts[1]) + ": "), 0u) << e;
+        EXPECT_NE(e.find("damaged"), std::string::npos) << e;
+    }
+}
+
+// Replaces the first record of the file's first block by `r`, with checksums that match: a record no
+// checksum catches, written by a faulty writer.
+void plantRecord(const std::string& path, size_t blockStart, const IrradianceRecord& r) {
+    std::string bytes = contents(path);
+    char* p = bytes.data() + blockStart + kHeadSize;
+    std::memcpy(p, &r.point, 24);
+    std::memcpy(p + 24, &r.normal, 24);
+    std::memcpy(p + 48, &r.axis, 24);
+    std::memcpy(p + 72, r.radius, 8);
+    uint32_t count;
+    std::memcpy(&count, bytes.data() + blockStart + 4, 4);
+    auto crc = [](const char* data, size_t size) { return uint32_t(crc32(0, (const Bytef*)data, uInt(size))); };
+    uint32_t recordsCrc = crc(p, count * kRecordSize), headCrc;
+    std::memcpy(bytes.data() + blockStart + 8, &recordsCrc, 4);
+    headCrc = crc(bytes.data() + blockStart, 12);
+    std::memcpy(bytes.data() + blockStart + 12, &headCrc, 4);
+    overwrite(path, bytes);
+}
+
+TEST_F(CacheFileTest, AnInvalidRecordInTheFileIsCorruptionNotAValue) {
+    size_t start = writeBlocks({2})[0];
+    IrradianceRecord bad = record(0);
+    bad.normal *= 2;
+    plantRecord(path_, start, bad);
+    std::string e = errorOf([&] { CacheFile(path_, kIdentity).readNew(); });
+    std::string where = path_ + ": byte " + std::to_string(start + kHeadSize) + ": ";
+    EXPECT_EQ(e.find(where + "damaged cache block (invalid record: its normal or axis is not a unit vector)"), 0u) << e;
+
+    bad = record(0);
+    bad.radius[1] = std::nanf("");
+    plantRecord(path_, start, bad);
+    e = errorOf([&] { CacheFile(path_, kIdentity).readNew(); });
+    EXPECT_NE(e.find("invalid record: a radius is not positive"), std::string::npos) << e;
+}
+
+TEST_F(CacheFileTest, InvalidRecordsAreNeverWritten) {
+    CacheFile file(path_, kIdentity);
+    IrradianceRecord nan = record(1), flat = record(2), mono = record(3, 1);
+    nan.values[4] = std::nanf("");
+    flat.radius[0] = 0;
+    for (const IrradianceRecord& r : {nan, flat, mono})
+        EXPECT_THROW(file.append({record(0), r}), std::invalid_argument);
+    EXPECT_TRUE(CacheFile(path_, kIdentity).readNew().empty());
+}
+
+// Every record of ids [0, writers × blocks × kPerBlock) read from the file exactly once.
+constexpr int kPerBlock = 3;
+
+void expectEveryRecordOnce(const std::string& path, int writers, int blocks) {
+    std::map<double, int> seen;
+    for (const IrradianceRecord& r : CacheFile(path, kIdentity).readNew()) ++seen[r.point.x];
+    ASSERT_EQ(seen.size(), size_t(writers * blocks * kPerBlock));
+    for (auto [id, times] : seen) {
+        EXPECT_EQ(times, 1) << id;
+        EXPECT_TRUE(id == std::floor(id) && id >= 0 && id < writers * blocks * kPerBlock) << id;
+    }
+}
+
+void appendBlocks(CacheFile& file, int writer, int blocks) {
+    for (int b = 0; b < blocks; ++b) file.append(records((writer * blocks + b) * kPerBlock, kPerBlock));
+}
+
+TEST_F(CacheFileTest, ProcessesWritingAtOnceLoseAndInterleaveNothing) {
+    constexpr int kWriters = 2, kBlocks = 200;
+    std::vector<pid_t> children;
+    for (int w = 0; w < kWriters; ++w) {
+        pid_t pid = fork();
+        ASSERT_GE(pid, 0);
+        if (pid == 0) {
+            // Both children create the file if neither finds it: one writes the header, the other reads it.
+            try {
+                CacheFile file(path_, kIdentity);
+                appendBlocks(file, w, kBlocks);
+                _exit(0);
+            } catch (...) {
+                _exit(2);
+            }
+        }
+        children.push_back(pid);
+    }
+    for (pid_t pid : children) {
+        int status = 0;
+        ASSERT_EQ(waitpid(pid, &status, 0), pid);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+    }
+    expectEveryRecordOnce(path_, kWriters, kBlocks);
+}
+
+TEST_F(CacheFileTest, ThreadsSharingOneFileLoseAndInterleaveNothing) {
+    constexpr int kThreads = 4, kBlocks = 100;
+    CacheFile file(path_, kIdentity);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t) threads.emplace_back([&, t] { appendBlocks(file, t, kBlocks); });
+    for (std::thread& t : threads) t.join();
+    EXPECT_TRUE(file.readNew().empty()) << "all its own";
+    expectEveryRecordOnce(path_, kThreads, kBlocks);
+}
+
+TEST_F(CacheFileTest, ThreadsWithAFileObjectEachLoseAndInterleaveNothing) {
+    constexpr int kThreads = 4, kBlocks = 100;
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([&, t] {
+            CacheFile file(path_, kIdentity);
+            appendBlocks(file, t, kBlocks);
+        });
+    for (std::thread& t : threads) t.join();
+    expectEveryRecordOnce(path_, kThreads, kBlocks);
+}
+
+// Random damage to a valid file: every outcome is records that are valid, or an Error; never a crash,
+// another exception or a NaN.
+TEST_F(CacheFileTest, DamagedFilesLoadOrFailCleanly) {
+    writeBlocks({2, 1, 4});
+    const std::string whole = contents(path_);
+    std::mt19937 random(7);
+    auto below = [&](size_t n) { return size_t(random() % n); };
+    setWarningsEnabled(false);
+    int loaded = 0, refused = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        std::string damaged = whole;
+        switch (trial % 3) {
+        case 0: damaged.resize(below(whole.size())); break;
+        case 1:
+            for (int i = 0, n = 1 + int(below(8)); i < n; ++i) damaged[below(damaged.size())] = char(random());
+            break;
+        case 2: {
+            size_t at = below(damaged.size()), n = below(200);
+            damaged.resize(std::max(damaged.size(), at + n));
+            for (size_t i = at; i < at + n; ++i) damaged[i] = char(random());
+        }
+        }
+        overwrite(path_, damaged);
+        try {
+            CacheFile file(path_, kIdentity);
+            for (const IrradianceRecord& r : file.readNew())
+                ASSERT_TRUE(std::isfinite(r.point.x) && r.radius[0] > 0 && r.values.size() == 15u);
+            file.append(records(100, 1));
+            CacheFile(path_, kIdentity).readNew();
+            ++loaded;
+        } catch (const Error&) {
+            ++refused;
+        }
+    }
+    setWarningsEnabled(true);
+    EXPECT_GT(loaded, 0);
+    EXPECT_GT(refused, 0);
+}
+
+}  // namespace
+}  // namespace brume
