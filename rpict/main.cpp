@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "integrator/integrator.h"
+#include "integrator/persistent_cache.h"
 #include "integrator/render_options.h"
 #include "render/camera_path.h"
 #include "render/frame_output.h"
@@ -145,7 +146,11 @@ class Rpict {
 public:
     Rpict(const Options& o, const Scene& scene, std::vector<std::string> command)
         : o_(o), scene_(scene), renderScene_(scene, o.render.materials), command_(std::move(command)),
-          progress_("rpict", o.reportInterval) {}
+          progress_("rpict", o.reportInterval), cache_(makeCache(renderScene_, o.render)) {
+        if (o.render.cacheFile.empty()) return;
+        if (cache_) cacheFile_.emplace(o.render.cacheFile, scene, o.render, cache_);
+        else warn("-af " + o.render.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
+    }
 
     void render(const Frame& f) {
         f.view.validate();
@@ -173,9 +178,9 @@ private:
                         std::to_string(long(kMaxPicturePixels)) + " pixels)");
         RenderSettings settings = o_.render;
         settings.time = f.time;
-        Integrator integrator(renderScene_, settings, cache_);
-        cache_ = integrator.cache();  // later frames reuse its records
+        Integrator integrator(renderScene_, settings, cache_);  // later frames reuse the records of earlier ones
         RenderedPicture r = renderPicture(integrator, f.view, p, &progress_);
+        if (cacheFile_) cacheFile_->sync();
         if (cache_ && o_.reportInterval > 0) std::fprintf(stderr, "rpict: irradiance cache: %s\n", cache_->summary().c_str());
         bool laterFrame = picturePath.empty() && framesOnOutput_++ > 0;
         r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
@@ -190,6 +195,7 @@ private:
     std::vector<std::string> command_;
     ProgressMeter progress_;
     std::shared_ptr<IrradianceCache> cache_;
+    std::optional<PersistentCache> cacheFile_;
     int framesOnOutput_ = 0;
 };
 

@@ -4,8 +4,10 @@
 #include <bit>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "integrator/integrator.h"
+#include "integrator/persistent_cache.h"
 #include "integrator/render_options.h"
 #include "io/ray_reader.h"
 #include "io/value_writer.h"
@@ -106,6 +108,11 @@ int run(int argc, char** argv) {
     Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
     Integrator integrator(renderScene, o.render);
+    std::optional<PersistentCache> cacheFile;
+    if (!o.render.cacheFile.empty()) {
+        if (integrator.cache()) cacheFile.emplace(o.render.cacheFile, scene, o.render, integrator.cache());
+        else warn("-af " + o.render.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
+    }
     ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene);
     if (o.header) writeHeader(scene, line->command, writer, o.outFormat);
     if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);
@@ -149,6 +156,7 @@ int run(int argc, char** argv) {
             else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(in.org, in.dir, base + i, tree);
             else records[i] = integrator.trace(in.org, in.dir, base + i, o.limitDistance ? in.maxDistance : 0, tree);
         });
+        if (cacheFile) cacheFile->sync();
         for (size_t i = 0; i < rays.size(); ++i) {
             InputRay in = rays[i];
             if (in.zero) {

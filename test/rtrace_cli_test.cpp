@@ -298,7 +298,7 @@ TEST_F(RtraceCli, DistanceLimitAndBinaryInput) {
 
 // Options of later work are refused by name, not ignored.
 TEST_F(RtraceCli, OptionsNotSupportedYetAreRefusedByName) {
-    for (const char* opt : {"-af cache.amb", "-me .1 .1 .1", "-cs 41", "-ti mod", "-pY"}) {
+    for (const char* opt : {"-ae mod", "-me .1 .1 .1", "-cs 41", "-ti mod", "-pY"}) {
         Output r = rtrace(std::string(opt) + " s.rad", "0 0 1 0 0 -1\n");
         EXPECT_NE(r.status, 0) << opt;
         EXPECT_EQ(r.out, "") << opt;

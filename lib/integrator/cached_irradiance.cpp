@@ -38,6 +38,11 @@ RecordShape recordShape(const RenderScene& scene, const RenderSettings& settings
     return shape;
 }
 
+std::shared_ptr<IrradianceCache> makeCache(const RenderScene& scene, const RenderSettings& settings) {
+    if (settings.ambientBounces <= 0 || !(settings.ambientAccuracy > 0) || settings.ambientDivisions <= 0) return nullptr;
+    return std::make_shared<IrradianceCache>(recordShape(scene, settings));
+}
+
 // The cached irradiance at the shading point for this side (`normal`). False where the path must sample
 // it itself: no cache, or no record here yet — then the record is asked for, and a work item that waits
 // for records is marked to run again.

@@ -25,8 +25,7 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
     const SceneGeometry& g = scene.geometry();
     double size = g.boundsMin().x <= g.boundsMax().x ? glm::length(g.boundsMax() - g.boundsMin()) : 1.0;
     epsilon_ = 1e-7 * size;
-    if (!cache_ && settings.ambientBounces > 0 && settings.ambientAccuracy > 0 && settings.ambientDivisions > 0)
-        cache_ = std::make_shared<IrradianceCache>(recordShape(scene, settings));
+    if (!cache_) cache_ = makeCache(scene, settings);
 }
 
 Integrator::~Integrator() = default;

@@ -45,6 +45,8 @@ struct RayTree {
 
 // The cache's record shape for a scene: -acache, -aa, and radius bounds from the scene's size and -ar.
 RecordShape recordShape(const RenderScene& scene, const RenderSettings& settings);
+// A new, empty irradiance cache if the settings call for one (-ab, -aa and -ad positive), else null.
+std::shared_ptr<IrradianceCache> makeCache(const RenderScene& scene, const RenderSettings& settings);
 
 class Integrator {
 public:

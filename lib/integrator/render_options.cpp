@@ -47,7 +47,8 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
               else throw Error("-acache: '" + a[0] + "' is neither adaptive nor classic");
           },
           [&s] { return std::string(s.cacheKind == RecordShape::Kind::Classic ? "classic" : "adaptive"); });
-    t.addUnsupported("-af", 1, "ambient cache file");
+    t.add("-af", 1, "irradiance cache file (Brume's format): records kept between runs and shared",
+          [&s](const auto& a) { s.cacheFile = a[0]; });
     t.addUnsupported("-ae", 1, "ambient exclude modifier");
     t.addUnsupported("-ai", 1, "ambient include modifier");
     t.addUnsupported("-aE", 1, "ambient exclude file");

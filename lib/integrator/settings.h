@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "cache/record_shape.h"
 #include "material/material.h"
@@ -16,6 +17,7 @@ struct RenderSettings {
     double ambientAccuracy = 0.1;    // -aa: the irradiance cache's relative error (0: no cache, path tracing)
     int ambientResolution = 256;     // -ar: the scene's size over the smallest record radius
     RecordShape::Kind cacheKind = RecordShape::Kind::Adaptive;  // -acache adaptive|classic
+    std::string cacheFile;           // -af: where the cache's records are kept between runs (changes no value)
     int ambientWeight = 0;           // -aw
     Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce
     int maxReflections = -10;        // -lr: > 0 hard limit; ≤ 0 Russian roulette past |lr| reflections

@@ -1,0 +1,50 @@
+#include "integrator/persistent_cache.h"
+
+#include <sstream>
+
+#include "integrator/render_options.h"
+#include "scene/scene_hash.h"
+
+namespace brume {
+
+std::string cacheOptions(const RenderSettings& settings) {
+    RenderSettings copy = settings;
+    bool irradianceAtHit = false;
+    OptionTable table;
+    addRenderOptions(table, copy, irradianceAtHit);
+    std::istringstream lines(table.defaults());
+    std::string line, text = "brume-" BRUME_VERSION;
+    while (std::getline(lines, line)) {
+        std::string option = line.substr(0, line.find('#'));
+        while (!option.empty() && std::isspace(static_cast<unsigned char>(option.back()))) option.pop_back();
+        // Which surface a value is asked for (-i) and how samples are seeded (-u) change no record.
+        if (option.empty() || option.rfind("-i", 0) == 0 || option.rfind("-u", 0) == 0 || option.rfind("-af", 0) == 0)
+            continue;
+        text += " " + option;
+    }
+    return text;
+}
+
+PersistentCache::PersistentCache(const std::string& path, const Scene& scene, const RenderSettings& settings,
+                                 std::shared_ptr<IrradianceCache> cache)
+    : file_(path, CacheIdentity{sceneContentHash(scene), cacheOptions(settings), Spectrum::defaultChannels()}),
+      cache_(std::move(cache)) {
+    load();
+}
+
+void PersistentCache::load() {
+    std::vector<IrradianceRecord> records = file_.readNew();
+    if (!records.empty()) cache_->insert(std::move(records));
+    known_ = cache_->size();
+}
+
+void PersistentCache::sync() {
+    if (cache_->size() > known_) {
+        std::vector<IrradianceRecord> made;
+        for (size_t i = known_; i < cache_->size(); ++i) made.push_back(cache_->record(i));
+        file_.append(made);
+    }
+    load();
+}
+
+}  // namespace brume
