@@ -43,6 +43,8 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const Surface
     auto sampled = [&](const Light& light) {
         return light.emitter().isDirectSource() && !(surface && light.surface() == surface);
     };
+    if (state.ambientLevel > 0 && !lobes.sampleGlossy && !lobes.sampleGlossyTrans && !(lobes.general && lobes.sampleGeneral))
+        if (auto one = oneSourceOf(sh, lobes, surface, state, ctx)) return *one;
     // Diffuse light of uniform sources: their unoccluded value in closed form (see directFrom), and how
     // bright it is in all, for -dt. A scratch per thread, so that shading allocates nothing.
     thread_local std::vector<double> closedForm;
@@ -62,6 +64,38 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const Surface
     }
     if (mirrorImagesOn()) sum += directViaMirrors(sh, lobes, surface, state, ctx);
     return sum;
+}
+
+// Past a diffuse bounce, the points a path shades are averaged many at a time (a record's hemisphere, a
+// pixel's paths): there one source, chosen in proportion to a rough guess of its light, stands for all of
+// them, so a point costs one source's shadow rays however many sources there are. Only where no lobe is
+// also sampled by rays (their weights against sources assume every source sampled). Nullopt: fewer than
+// two sources to choose from.
+std::optional<Spectrum> Integrator::oneSourceOf(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
+                                                const PathState& state, Context& ctx) const {
+    const std::vector<Light>& lights = scene_.lights();
+    thread_local std::vector<double> guess;
+    guess.assign(lights.size(), 0.0);
+    double total = 0;
+    int candidates = 0;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const Light& light = lights[i];
+        if (!light.emitter().isDirectSource() || (surface && light.surface() == surface)) continue;
+        guess[i] = light.roughSolidAngle(sh.point) * std::max(1e-30f, brightness(light.emitter().radiance));
+        total += guess[i];
+        ++candidates;
+    }
+    if (candidates < 2 || !(total > 0)) return std::nullopt;
+    double u = ctx.rng.uniform() * total;
+    size_t chosen = 0;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        if (guess[i] <= 0) continue;
+        chosen = i;
+        if ((u -= guess[i]) < 0) break;
+    }
+    Spectrum value = directFrom(lights[chosen], -1, 1.0, sh, lobes, surface, state, ctx) * float(total / guess[chosen]);
+    if (mirrorImagesOn()) value += directViaMirrors(sh, lobes, surface, state, ctx);
+    return value;
 }
 
 // One source's light. With `closedForm` ≥ 0, the diffuse part is that unoccluded value less what the

@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cache/irradiance_cache.h"
@@ -115,6 +116,8 @@ private:
                                 const SurfaceHit* hit, Spectrum* misEmission) const;
     Spectrum direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                     Context& ctx) const;
+    std::optional<Spectrum> oneSourceOf(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
+                                        const PathState& state, Context& ctx) const;
     Spectrum directFrom(const Light& light, double closedForm, double share, const Shading& sh, const Lobes& lobes,
                         const SurfaceId& surface, const PathState& state, Context& ctx) const;
     int thresholdedCount(int count, double share) const;

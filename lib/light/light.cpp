@@ -90,6 +90,12 @@ int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
     return std::max(1, n * n);
 }
 
+double Light::roughSolidAngle(const dvec3& p) const {
+    if (isDistant()) return 2 * kPi * oneMinusCos_;
+    double d2 = glm::dot(center_ - p, center_ - p), s2 = size_ * size_;
+    return s2 / std::max(d2, s2);
+}
+
 void Light::pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const {
     if (const auto* poly = std::get_if<Polygon>(shape_)) {
         size_t t = std::lower_bound(triangleCdf_.begin(), triangleCdf_.end(), u) - triangleCdf_.begin();

@@ -52,6 +52,9 @@ public:
     // in the way, in closed form (Lambert's polygon formula; πsin²α·cosβ for spheres and distant discs wholly
     // above the surface's horizon); negative where no closed form is used.
     double unoccludedIrradiance(const dvec3& p, const dvec3& n) const;
+    // A rough, cheap guess of the solid angle the source fills seen from p (its size over its distance,
+    // squared; a distant source's cone), to choose among sources: positive wherever it may give light.
+    double roughSolidAngle(const dvec3& p) const;
     // Uniform sources shaped as polygons, spheres or distant discs: unoccludedIrradiance may answer.
     bool hasClosedForm() const;
     bool patterned() const { return patterned_; }
