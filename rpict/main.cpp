@@ -12,6 +12,7 @@
 #include "integrator/render_options.h"
 #include "render/camera_path.h"
 #include "render/frame_output.h"
+#include "render/picture_options.h"
 #include "render/picture_renderer.h"
 #include "render/progress.h"
 #include "scene/reader.h"
@@ -35,26 +36,8 @@ struct Options {
     double framesPerSecond = 0;
     bool exrFloat = false;
 
-    Options() {  // Radiance's rpict defaults, where they differ from rtrace's
-        render.directThreshold = .05, render.directCertainty = .5, render.sourceSubdivision = .25;
-        render.directRelays = 1, render.materials.specularThreshold = .15;
-        render.ambientAccuracy = .2, render.ambientResolution = 64, render.ambientDivisions = 512;
-        render.ambientSupersamples = 128, render.maxReflections = 7, render.randomSampling = false;
-    }
+    Options() { usePictureDefaults(render); }
 };
-
-void addPictureOptions(OptionTable& t, PictureSettings& p) {
-    addIntOption(t, "-x", p.xres, "x resolution");
-    addIntOption(t, "-y", p.yres, "y resolution");
-    addRealOption(t, "-pa", p.pixelAspect, "pixel aspect ratio (height/width; 0: keep -x and -y)");
-    addRealOption(t, "-pj", p.jitter, "pixel jitter");
-    addRealOption(t, "-pd", p.aperture, "pixel depth of field: lens diameter, focused at the length of -vd");
-    addIntOption(t, "-ps", p.sampleSpacing, "pixel sample spacing of the first pass");
-    addRealOption(t, "-pt", p.sampleThreshold, "pixel threshold: relative difference traced between samples");
-    t.add("-pm", 1, "pixel motion blur (only 0)", [](const auto& a) {
-        if (toReal("-pm", a[0]) != 0) throw Error("motion blur (-pm) is not supported by Brume yet");
-    }, [] { return std::string("0.000000"); });
-}
 
 OptionTable makeTable(Options& o) {
     OptionTable t;
@@ -172,10 +155,7 @@ private:
         PictureSettings p = o_.picture;
         p.depth = !o_.depthOutput.empty();
         p.drawSources = o_.render.directVisible && p.aperture == 0;
-        fitResolution(f.view, p);
-        if (p.xres <= 0 || p.yres <= 0 || double(p.xres) * p.yres > kMaxPicturePixels)
-            throw Error("bad resolution " + std::to_string(p.xres) + "x" + std::to_string(p.yres) + " (at most " +
-                        std::to_string(long(kMaxPicturePixels)) + " pixels)");
+        fitPictureResolution(f.view, p);
         RenderSettings settings = o_.render;
         settings.time = f.time;
         Integrator integrator(renderScene_, settings, cache_);  // later frames reuse the records of earlier ones

@@ -90,12 +90,6 @@ void writeHeader(const Scene& scene, const std::vector<std::string>& command, co
     std::fputs(h.c_str(), stdout);
 }
 
-struct InputRay {
-    dvec3 org, dir;
-    double maxDistance;
-    bool zero;
-};
-
 int run(int argc, char** argv) {
     std::ios::sync_with_stdio(false);  // std::cin reads rays; unsynchronised it reads them in blocks
     Options o;
@@ -122,32 +116,15 @@ int run(int argc, char** argv) {
     RayReader reader(std::cin, o.inFormat);
     long limit = o.yres > 0 ? (o.xres > 1 ? long(o.xres) * o.yres : o.yres) : 0;
     long flushEvery = (o.yres == 0 || o.xres <= 1) ? o.xres : 0;
-    size_t batch = flushEvery > 0 ? size_t(flushEvery) : 4096;
+    RayBatches batches(reader, flushEvery > 0 ? size_t(flushEvery) : kRayBatchSize, limit);
     dvec3 lastOrg(0), lastDir(0);
-    long count = 0;
-    bool done = false;
     std::vector<InputRay> rays;
     std::vector<RayRecord> records;
     std::vector<RayTree> trees;
-    while (!done) {
-        rays.clear();
-        std::array<double, 6> r;
-        while (rays.size() < batch && (limit == 0 || count < limit)) {
-            if (!reader.next(r)) {
-                done = true;
-                if (limit > 0) warn("unexpected EOF on input");
-                break;
-            }
-            ++count;
-            dvec3 org(r[0], r[1], r[2]), dir(r[3], r[4], r[5]);
-            double len = glm::length(dir);
-            rays.push_back({org, len > 0 ? dir / len : dir, len, !(len > 0)});
-            if (rays.back().zero) break;  // a flush request: finish what came before it
-        }
-        if (limit > 0 && count >= limit) done = true;
+    while (batches.next(rays)) {
         records.assign(rays.size(), RayRecord{});
         trees.assign(writer.tracing() ? rays.size() : 0, RayTree{{}, writer.tracesShadowRays()});
-        uint64_t base = uint64_t(count - long(rays.size()));
+        uint64_t base = batches.first();
         integrator.forEach(rays.size(), [&](size_t i) {
             const InputRay& in = rays[i];
             if (in.zero) return;

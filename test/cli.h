@@ -34,4 +34,20 @@ inline Output runCaptured(const std::string& line, const std::filesystem::path& 
     return {slurp(scratch / "out"), slurp(scratch / "err"), WEXITSTATUS(status)};
 }
 
+// Runs the shell commands `lines` in `scratch`, Brume's programs first on the PATH; all their output is
+// captured.
+inline Output runBrume(const std::string& lines, const std::filesystem::path& scratch) {
+    return runCaptured("cd '" + scratch.string() + "' && PATH='" + std::string(BRUME_BIN_DIR) + "':\"$PATH\" && {\n" +
+                           lines + "\n}",
+                       scratch);
+}
+
+// The record count in mkcache's report "mkcache: file: N records (...)", or -1.
+inline long reportedRecords(const std::string& err) {
+    size_t at = err.find(" records (");
+    if (at == std::string::npos) return -1;
+    size_t start = err.rfind(' ', at - 1) + 1;
+    return std::stol(err.substr(start, at - start));
+}
+
 }  // namespace brume_test

@@ -227,6 +227,68 @@ TEST_F(RtraceCli, CachedValuesDoNotDependOnTheThreadCount) {
     EXPECT_EQ(one.out, two.out);
 }
 
+// Sensors facing up on the floor of the room, over x in [x0, x1].
+std::string floorSensors(double x0, double x1, int count) {
+    std::string points;
+    for (int i = 0; i < count; ++i)
+        points += std::to_string(x0 + (x1 - x0) * (i % 10) / 9) + " " + std::to_string(-4 + i / 10) + " 0 0 0 1\n";
+    return points;
+}
+
+const char* kRoomWalls =
+    "grey polygon wall 0 0 12 -5 -5 0 -5 5 0 -5 5 4 -5 -5 4\n"
+    "grey polygon ceiling 0 0 12 -5 -5 4 -5 5 4 5 5 4 5 -5 4\n";
+
+// A cache file is never reused for other options or another scene: rtrace stops and says which.
+TEST_F(RtraceCli, CacheFilesOfOtherOptionsOrScenesAreRefused) {
+    writeScene("room.rad", std::string(kScene) + kRoomWalls);
+    writeScene("lit.rad", std::string(kScene) + kRoomWalls + "grey sphere ball 0 0 4 1 1 1 .5\n");
+    fs::remove(brume_test::scratchDir("cli") / "c");
+    std::string points = floorSensors(-4, 4, 20);
+    ASSERT_EQ(rtrace("-h- -I -u- -ab 2 -ad 64 -af c room.rad", points).status, 0);
+    Output options = rtrace("-h- -I -u- -ab 3 -ad 64 -af c room.rad", points);
+    EXPECT_NE(options.status, 0);
+    EXPECT_EQ(options.out, "");
+    EXPECT_NE(options.err.find("other options"), std::string::npos) << options.err;
+    Output scene = rtrace("-h- -I -u- -ab 2 -ad 64 -af c lit.rad", points);
+    EXPECT_NE(scene.status, 0);
+    EXPECT_NE(scene.err.find("another scene"), std::string::npos) << scene.err;
+}
+
+// Two rtrace processes appending to one -af file at once, on two halves of a room: the file stays whole
+// (a third run reads it without complaint) and holds more records than either makes alone.
+TEST_F(RtraceCli, ProcessesShareOneCacheFile) {
+    fs::path dir = brume_test::scratchDir("cli");
+    writeScene("room.rad", std::string(kScene) + kRoomWalls);
+    std::ofstream(dir / "left.txt") << floorSensors(-4.5, -0.5, 40);
+    std::ofstream(dir / "right.txt") << floorSensors(0.5, 4.5, 40);
+    for (const char* f : {"left.c", "right.c", "shared.c"}) fs::remove(dir / f);
+    const std::string options = " -u- -ab 2 -ad 64 -n 1 -I ";
+    auto records = [&](const std::string& file, const std::string& points) {
+        Output r = brume_test::runBrume("mkcache" + options + "-af " + file + " room.rad < " + points, dir);
+        EXPECT_EQ(r.status, 0) << r.err;
+        return brume_test::reportedRecords(r.err);
+    };
+    long left = records("left.c", "left.txt"), right = records("right.c", "right.txt");
+    Output both = brume_test::runBrume(
+        "rtrace -h-" + options + "-af shared.c room.rad < left.txt > left.out 2>&1 &\n"
+        "rtrace -h-" + options + "-af shared.c room.rad < right.txt > right.out 2>&1 &\n"
+        "wait",
+        dir);
+    ASSERT_EQ(both.status, 0);
+    for (const char* out : {"left.out", "right.out"}) {
+        std::string text = brume_test::slurp(dir / out);
+        EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 40) << text;  // values, no message
+    }
+    // Each half has points the other's records do not reach, so both processes added records.
+    long shared = records("shared.c", "/dev/null");
+    EXPECT_GT(left, 0);
+    EXPECT_GT(shared, std::max(left, right));
+    Output third = rtrace("-h-" + options + "-af shared.c room.rad", floorSensors(-4.5, 4.5, 40));
+    EXPECT_EQ(third.status, 0) << third.err;
+    EXPECT_EQ(third.err, "");
+}
+
 // Trace mode: each ray of the tree after its children, one tab per level, then the per-ray fields; -oT
 // adds the shadow rays.
 TEST_F(RtraceCli, TraceOutputPrintsRayTreesChildrenFirst) {

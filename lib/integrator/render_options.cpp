@@ -63,6 +63,13 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addRealOption(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
 }
 
+void usePictureDefaults(RenderSettings& s) {
+    s.directThreshold = .05, s.directCertainty = .5, s.sourceSubdivision = .25;
+    s.directRelays = 1, s.materials.specularThreshold = .15;
+    s.ambientAccuracy = .2, s.ambientResolution = 64, s.ambientDivisions = 512;
+    s.ambientSupersamples = 128, s.maxReflections = 7, s.randomSampling = false;
+}
+
 void addProgramOptions(OptionTable& t, ProgramOptions& o) {
     o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
     t.addBool("-w", o.warnings, "warning messages");

@@ -12,6 +12,9 @@ namespace brume {
 // Registers the options that set `settings`; `irradianceAtHit` receives -i.
 void addRenderOptions(OptionTable& table, RenderSettings& settings, bool& irradianceAtHit);
 
+// Radiance's rpict defaults, where they differ from rtrace's (fewer, coarser samples for pictures).
+void usePictureDefaults(RenderSettings& settings);
+
 // What every rendering program takes besides: -w, -n, -e, and -defaults -help -version -features, which
 // print and stop (recorded in `immediate`).
 struct ProgramOptions {
@@ -30,7 +33,7 @@ struct CommandLine {
 // stops; throws Error after the usage when no scene is named.
 std::optional<CommandLine> parseCommandLine(int argc, char** argv, const OptionTable& table, const ProgramOptions& options,
                                             const std::string& usage, const std::string& features);
-// Refuses settings that cannot work together; warns about -aa until the irradiance cache exists.
+// Refuses settings that cannot work together.
 void checkRenderSettings(const RenderSettings& settings);
 
 }  // namespace brume

@@ -5,6 +5,10 @@
 #include <cstdlib>
 #include <string>
 
+#include <glm/geometric.hpp>
+
+#include "util/error.h"
+
 namespace brume {
 
 // One whitespace-separated word as a number, read straight from the stream buffer (rays come by the
@@ -46,6 +50,29 @@ bool RayReader::next(std::array<double, 6>& ray) {
         }
     }
     return true;
+}
+
+bool RayBatches::next(std::vector<InputRay>& rays) {
+    first_ = uint64_t(count_);
+    rays.clear();
+    std::array<double, 6> r;
+    while (!done_ && rays.size() < size_) {
+        if (limit_ > 0 && count_ >= limit_) {
+            done_ = true;
+            break;
+        }
+        if (!reader_.next(r)) {
+            done_ = true;
+            if (limit_ > 0) warn("unexpected EOF on input");
+            break;
+        }
+        ++count_;
+        dvec3 org(r[0], r[1], r[2]), dir(r[3], r[4], r[5]);
+        double length = glm::length(dir);
+        rays.push_back({org, length > 0 ? dir / length : dir, length, !(length > 0)});
+        if (rays.back().zero) break;  // a flush request: finish what came before it
+    }
+    return !rays.empty();
 }
 
 }  // namespace brume

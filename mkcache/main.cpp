@@ -1,0 +1,140 @@
+// mkcache: an irradiance cache file (-af) made ahead of rendering, from the points rtrace will be given or the
+// picture rpict will render (see man/mkcache.1). It writes nothing on its standard output.
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "integrator/integrator.h"
+#include "integrator/persistent_cache.h"
+#include "integrator/render_options.h"
+#include "io/ray_reader.h"
+#include "render/picture_options.h"
+#include "render/progress.h"
+#include "scene/reader.h"
+#include "view/view_options.h"
+
+using namespace brume;
+
+namespace {
+
+const char* const kUsage =
+    "usage: mkcache [options] -af file octree|scene.rad ... < points\n"
+    "       mkcache [options] -af file view options [-x N -y N] octree|scene.rad ...\n";
+
+struct Options {
+    ProgramOptions program;
+    RenderSettings render;
+    PictureSettings picture;  // its `irradiance` is -i, for points and pictures alike
+    View view;
+    bool irradiance = false, limitDistance = false;
+    char inFormat = 'a';
+    double reportInterval = 0;
+};
+
+OptionTable makeTable(Options& o) {
+    OptionTable t;  // mkcache's own options first, then those it shares with rtrace and rpict
+    t.addBool("-I", o.irradiance, "points are sensors: irradiance at the origin, the direction being the surface normal");
+    t.addBool("-ld", o.limitDistance, "limit distance to the length of the direction vector");
+    // rtrace's two-letter forms (-faa) are taken too, so its options can be copied; the output letter is moot.
+    t.addAttached("-f", "input format: a (ascii), f (float), d (double)", [&o](const std::string& v) {
+        if (v.empty() || v.size() > 2 || std::string("afd").find(v[0]) == std::string::npos ||
+            (v.size() == 2 && std::string("afdc").find(v[1]) == std::string::npos))
+            throw Error("command line error at '-f" + v + "'");
+        o.inFormat = v[0];
+    }, [&o] { return std::string(1, o.inFormat); });
+    addRealOption(t, "-t", o.reportInterval, "seconds between progress reports (0: none, or a live line on a terminal)");
+    addProgramOptions(t, o.program);
+    addViewOptions(t, o.view);
+    addPictureOptions(t, o.picture);
+    addRenderOptions(t, o.render, o.picture.irradiance);
+    return t;
+}
+
+// Whether the command line gives a view: then mkcache renders its picture, with rpict's defaults, so that the
+// cache file suits `rpict` given the same options.
+bool namesView(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    expandResponseFiles(args);
+    return std::any_of(args.begin(), args.end(),
+                       [](const std::string& w) { return w.starts_with("-v") && w != "-version"; });
+}
+
+struct Batch {
+    uint64_t first;  // index of its first ray, which seeds the samples
+    std::vector<InputRay> rays;
+};
+
+// Every point on the standard input, in rtrace's batches; read first so that progress knows the total.
+std::vector<Batch> readPoints(char format, long& total) {
+    RayReader reader(std::cin, format);
+    RayBatches batches(reader, kRayBatchSize, 0);
+    std::vector<Batch> all;
+    for (std::vector<InputRay> rays; batches.next(rays);) all.push_back({batches.first(), rays});
+    if (reader.partial()) warn("partial ray at end of input ignored");
+    total = 0;
+    for (const Batch& b : all) total += long(b.rays.size());
+    return all;
+}
+
+// Traces the points as rtrace would, discarding the values: each batch makes the records rtrace's would, and
+// they go to the file after it.
+void cachePoints(const Options& o, const Integrator& integrator, PersistentCache& file, ProgressMeter& progress) {
+    long total;
+    std::vector<Batch> batches = readPoints(o.inFormat, total);
+    progress.start(total);
+    for (const Batch& b : batches) {
+        integrator.forEach(b.rays.size(), [&](size_t i) {
+            const InputRay& in = b.rays[i];
+            if (in.zero) return;
+            if (o.irradiance) integrator.irradiance(in.org, in.dir, b.first + i);
+            else if (o.picture.irradiance) integrator.irradianceAtHit(in.org, in.dir, b.first + i);
+            else integrator.trace(in.org, in.dir, b.first + i, o.limitDistance ? in.maxDistance : 0);
+        });
+        file.sync();
+        progress.advance(long(b.rays.size()), long(b.rays.size()));
+    }
+    progress.finish();
+}
+
+// Renders the view's picture as rpict would, discarding it: the records it needs go to the file.
+void cachePicture(const Options& o, const Integrator& integrator, PersistentCache& file, ProgressMeter& progress) {
+    PictureSettings p = o.picture;
+    fitPictureResolution(o.view, p);
+    renderPicture(integrator, o.view, p, &progress);
+    file.sync();
+}
+
+int run(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);  // std::cin reads points; unsynchronised it reads them in blocks
+    Options o;
+    bool picture = namesView(argc, argv);
+    if (picture) usePictureDefaults(o.render);
+    OptionTable table = makeTable(o);
+    auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\n");
+    if (!line) return 0;
+    checkRenderSettings(o.render);
+    if (o.render.cacheFile.empty()) throw Error("no cache file: give one with -af file");
+    if (o.irradiance && o.picture.irradiance) throw Error("-I and -i are exclusive");
+    if (picture) o.view.validate();
+    Scene scene = loadScene(line->scene);
+    RenderScene renderScene(scene, o.render.materials);
+    Integrator integrator(renderScene, o.render);
+    if (!integrator.cache()) throw Error("nothing to cache: the irradiance cache needs -ab > 0, -aa > 0 and -ad > 0");
+    PersistentCache file(o.render.cacheFile, scene, o.render, integrator.cache());
+
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
+    tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
+    ProgressMeter progress("mkcache", o.reportInterval);
+    if (picture) cachePicture(o, integrator, file, progress);
+    else cachePoints(o, integrator, file, progress);
+    std::fprintf(stderr, "mkcache: %s: %s\n", o.render.cacheFile.c_str(), integrator.cache()->summary().c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return runReportingErrors([&] { return run(argc, argv); });
+}
