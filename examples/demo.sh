@@ -64,15 +64,16 @@ paste "$grid" <(printf '%s\n' "$values") | awk '
   }'
 awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" 'BEGIN { printf "\nrtrace run time: %.2f s on %d threads\n", t / 1000, n }'
 
-# A picture from a standing eye by the west wall, looking at the desks: one diffuse bounce path-traced with 32
-# paths per pixel (-ab 1 -aa 0 -ad 32), every other pixel traced first and the rest traced or interpolated
-# (-ps 2 -pt .1). -t 5 reports progress every 5 seconds.
+# A picture from a standing eye by the west wall, looking at the desks: diffuse interreflection from the
+# irradiance cache (-ab 1 with rpict's -aa .2 -ad 512; bounces past the first by Russian roulette), every
+# other pixel traced first and the rest traced or interpolated (-ps 2 -pt .1). -t 5 reports progress every
+# 5 seconds, and the cache's records at the end.
 out=$(cd "$bin/.." && pwd)/demo
 mkdir -p "$out"
 picture=$out/office.hdr
 rm -f "$picture"   # rpict never overwrites a picture
 view=(-vp 0.3 0.3 1.6 -vd 1 0.8 -0.3 -vh 75 -vv 55)
-popts=(-x 480 -y 360 -ab 1 -aa 0 -ad 32 -ps 2 -pt .1 -n "$threads")
+popts=(-x 480 -y 360 -ab 1 -ps 2 -pt .1 -n "$threads")
 echo
 echo "  rpict ${popts[*]} ${view[*]} -o office.hdr office.rad"
 start=$(date +%s%N)
