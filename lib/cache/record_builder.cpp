@@ -15,15 +15,6 @@ struct Tangent {
     double x = 0, y = 0;
 };
 
-// Luminance-like weights of the channels, as brightness() gives them.
-float brightnessOf(const HemisphereSamples& hs, int i) {
-    if (hs.channels() == 3)
-        return 0.265f * hs.radiance(i, 0) + 0.670f * hs.radiance(i, 1) + 0.065f * hs.radiance(i, 2);
-    float sum = 0;
-    for (int c = 0; c < hs.channels(); ++c) sum += hs.radiance(i, c);
-    return sum / hs.channels();
-}
-
 // Per channel: E and its translational (Ward–Heckbert) and rotational gradients, in the frame.
 struct Measured {
     std::vector<double> irradiance;
@@ -99,7 +90,7 @@ Symmetric2 curvatureBound(const HemisphereSamples& hs) {
         if (!std::isfinite(d)) continue;
         const dvec3& dir = hs.direction(i);
         Tangent t{glm::dot(dir, hs.frame().s), glm::dot(dir, hs.frame().t)};
-        double sin2 = t.x * t.x + t.y * t.y, e = cell * brightnessOf(hs, i);
+        double sin2 = t.x * t.x + t.y * t.y, e = cell * hs.brightness(i);
         double w = 3 * e / (d * d);
         if (sin2 < 1e-12) {
             h.a += w * 4, h.c += w * 4;  // overhead: 5 sin²θ − 1 = −1 both ways
@@ -120,7 +111,7 @@ double predicted(const HemisphereSamples& hs, const dvec3& p) {
     const dvec3& n = hs.frame().n;
     double sum = 0;
     for (int i = 0; i < hs.count(); ++i) {
-        double e = cell * brightnessOf(hs, i), d = hs.distance(i);
+        double e = cell * hs.brightness(i), d = hs.distance(i);
         if (!std::isfinite(d)) {
             sum += e;
             continue;
