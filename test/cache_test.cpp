@@ -154,3 +154,35 @@ TEST(CachedIrradiance, OfficeSensorsStayWithinTheAccuracyOfTheIndirectLight) {
         EXPECT_LE(worst, 3 * accuracy) << "-aa " << accuracy;
     }
 }
+
+// Records hold diffuse irradiance only: the glossy reflection of a shiny floor is sampled by rays at every
+// look, so a glossy room seen through the cache equals its path-traced picture. Tolerance 3% on the mean
+// of 64 view rays (the path-traced side has ~1% noise; the cache's records ~2% each).
+TEST(CachedIrradiance, GlossySurfacesKeepTheirHighlights) {
+    TestScene t("void light lum 0 0 3 50 50 50\n"
+                "lum polygon panel 0 0 12 -.5 -.5 2.9 .5 -.5 2.9 .5 .5 2.9 -.5 .5 2.9\n"
+                "void plastic shiny 0 0 5 .4 .4 .4 .08 .05\n"
+                "void plastic paint 0 0 5 .6 .6 .6 0 0\n"
+                "shiny polygon floor 0 0 12 -3 -3 0 3 -3 0 3 3 0 -3 3 0\n"
+                "paint polygon ceiling 0 0 12 -3 -3 3 -3 3 3 3 3 3 3 -3 3\n"
+                "paint polygon north 0 0 12 -3 3 0 3 3 0 3 3 3 -3 3 3\n"
+                "paint polygon south 0 0 12 -3 -3 0 -3 -3 3 3 -3 3 3 -3 0\n"
+                "paint polygon east 0 0 12 3 -3 0 3 3 0 3 3 3 3 -3 3\n"
+                "paint polygon west 0 0 12 -3 -3 0 -3 -3 3 -3 3 3 -3 3 0\n");
+    auto meanOfRays = [&](const RenderSettings& s) {
+        Integrator integrator(t.render, s);
+        std::vector<double> values(64);
+        integrator.forEach(values.size(), [&](size_t i) {
+            dvec3 target(-1.5 + 0.4 * (i % 8), -1.5 + 0.4 * double(i / 8), 0);  // floor points, some in the highlight
+            dvec3 eye(-2.5, -2.5, 1.5);
+            values[i] = brightness(integrator.trace(eye, target - eye, i).value);
+        });
+        double sum = 0;
+        for (double v : values) sum += v;
+        return sum / values.size();
+    };
+    RenderSettings pathTraced = cached(50, 0);
+    pathTraced.ambientDivisions = 2048;
+    double expected = meanOfRays(pathTraced);
+    EXPECT_NEAR(meanOfRays(cached(2)), expected, 0.03 * expected);
+}
