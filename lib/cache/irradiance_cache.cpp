@@ -9,7 +9,9 @@
 namespace brume {
 
 namespace {
-constexpr size_t kUnindexedLimit = 256;  // records looked at one by one before the BVH is rebuilt
+// Records added since the BVH was built are looked at one by one; it is rebuilt when they are more than
+// this, or an eighth of the indexed ones (so rebuilding costs a constant factor of the records' count).
+constexpr size_t kUnindexedLimit = 64;
 }
 
 // Embree's BVH over the records' zones, asked with point queries (radius 0: the zones' boxes holding a point).
@@ -89,7 +91,12 @@ void IrradianceCache::forEachHolding(const dvec3& p, F&& f) const {
                       },
                       &found);
     }
-    for (size_t i = indexed_; i < records_.size(); ++i) f(i);
+    for (size_t i = indexed_; i < records_.size(); ++i) {
+        const IrradianceRecord& r = records_[i];
+        dvec3 d = p - r.point;
+        double reach = std::max(r.radius[0], r.radius[1]);
+        if (glm::dot(d, d) <= reach * reach) f(i);
+    }
 }
 
 bool IrradianceCache::lookup(const dvec3& p, const dvec3& n, int level, Spectrum& irradiance) const {
@@ -177,7 +184,7 @@ void IrradianceCache::insert(std::vector<IrradianceRecord> records) {
         records_.push_back(std::move(r));
         reconcile(records_.size() - 1);
     }
-    if (records_.size() - indexed_ <= kUnindexedLimit && before > 0) return;
+    if (records_.size() - indexed_ <= std::max(kUnindexedLimit, indexed_ / 8) && before > 0) return;
     if (index_->scene) rtcReleaseScene(index_->scene);
     index_->scene = rtcNewScene(index_->device);
     RTCGeometry geometry = rtcNewGeometry(index_->device, RTC_GEOMETRY_TYPE_USER);
