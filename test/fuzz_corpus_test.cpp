@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fuzz/exercise_cache_file.h"
 #include "fuzz/exercise_cal.h"
 #include "fuzz/exercise_font.h"
 #include "fuzz/exercise_pattern_data.h"
@@ -127,4 +128,10 @@ TEST(FuzzCorpus, FontInputsAreReadOrRefusedCleanly) {
 
 TEST(FuzzCorpus, ViewLinesAndCameraPathsGiveFiniteRays) {
     for (const std::string& input : corpus("corpus_view")) EXPECT_TRUE(exerciseViewText(input)) << input;
+}
+
+TEST(FuzzCorpus, CacheFilesLoadOrAreRefusedCleanly) {
+    setWarningsEnabled(false);  // torn blocks are dropped with a warning
+    for (const std::string& input : corpus("corpus_cache")) EXPECT_TRUE(exerciseCacheFile(input));
+    setWarningsEnabled(true);
 }
