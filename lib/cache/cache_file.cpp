@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -220,6 +222,33 @@ CacheFile::CacheFile(std::string path, CacheIdentity identity)
 
 CacheFile::~CacheFile() { close(fd_); }
 
+// The options of an OPTIONS= text, each with its values ("-ab 5", "-av 0 0 0"), and the program's version.
+static std::vector<std::string> optionGroups(std::string_view text) {
+    std::vector<std::string> groups;
+    std::istringstream words{std::string(text)};
+    for (std::string w; words >> w;) {
+        bool starts = groups.empty() || (w.size() > 1 && w[0] == '-' && std::isalpha(static_cast<unsigned char>(w[1])));
+        if (starts) groups.push_back(w);
+        else groups.back() += " " + w;
+    }
+    return groups;
+}
+
+// "-ab 5 (now -ab 4)": what differs between the file's options and the run's.
+static std::string optionDifference(std::string_view file, std::string_view now) {
+    std::vector<std::string> a = optionGroups(file), b = optionGroups(now), onlyA, onlyB;
+    for (const std::string& g : a)
+        if (std::find(b.begin(), b.end(), g) == b.end()) onlyA.push_back(g);
+    for (const std::string& g : b)
+        if (std::find(a.begin(), a.end(), g) == a.end()) onlyB.push_back(g);
+    auto join = [](const std::vector<std::string>& v) {
+        std::string out;
+        for (const std::string& g : v) out += (out.empty() ? "" : " ") + g;
+        return out.empty() ? std::string("none") : out;
+    };
+    return join(onlyA) + " (now " + join(onlyB) + ")";
+}
+
 void CacheFile::checkHeader() {
     std::string text(kMaxHeaderSize, '\0');
     text.resize(readAt(fd_, path_, text.data(), text.size(), 0));
@@ -239,7 +268,7 @@ void CacheFile::checkHeader() {
     if (fields["SCENE"] != identity_.scene)
         refuse("was made for another scene (its SCENE= differs: the scene or a file it reads has changed)");
     if (fields["OPTIONS"] != identity_.options)
-        refuse("was made with other options (\"" + fields["OPTIONS"] + "\", now \"" + identity_.options + "\")");
+        refuse("was made with other options: " + optionDifference(fields["OPTIONS"], identity_.options));
     if (fields["CHANNELS"] != std::to_string(identity_.channels))
         refuse("holds values of " + fields["CHANNELS"] + " channels, not " + std::to_string(identity_.channels));
     offset_ = end + 2;
