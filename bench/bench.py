@@ -56,28 +56,40 @@ def read_rgb(text):
     return rows
 
 
-def run(cmd, stdin_path, env=None, capture=True, out_path=None):
-    """Runs cmd with stdin from a file and stdout captured (as text), discarded, or written to out_path;
-    returns (stdout text or None, wall s)."""
-    with open(stdin_path, "rb") as fin, open(out_path or os.devnull, "wb") as fout:
-        t0 = time.perf_counter()
-        p = subprocess.Popen(cmd, stdin=fin, stdout=subprocess.PIPE if capture and not out_path else fout,
-                             stderr=subprocess.PIPE, env=env)
-        out, err = p.communicate()
-        wall = time.perf_counter() - t0
-    if p.returncode != 0:
-        sys.exit("bench: command failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), err.decode(errors="replace")))
-    return (out.decode() if out is not None else None), wall
+GNU_TIME = "/usr/bin/time"
+MAX_RSS = "bench max rss kB: "
 
 
 class Timer:
-    """Wall and CPU time (user + system of children) of one run."""
+    """One run of cmd with stdin from a file and stdout captured (out, text), discarded, or written to out_path: its
+    wall and CPU time (user + system), peak memory (max_rss_mb, None if unknown), stderr (err) and exit status
+    (returncode). A failed run ends the bench unless check is False. The peak memory is GNU time's: the maximum
+    resident set that wait4 gives for a child of this process counts the copy of Python it was forked from."""
 
-    def __init__(self, cmd, stdin_path, env=None, capture=True, out_path=None):
-        before = os.times()
-        self.out, self.wall = run(cmd, stdin_path, env, capture, out_path)
-        after = os.times()
-        self.cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
+    def __init__(self, cmd, stdin_path, env=None, capture=True, out_path=None, check=True):
+        timed = os.access(GNU_TIME, os.X_OK)
+        with open(stdin_path, "rb") as fin, open(out_path or os.devnull, "wb") as fout, \
+                tempfile.TemporaryFile() as ferr:
+            t0 = time.perf_counter()
+            p = subprocess.Popen(([GNU_TIME, "-f", MAX_RSS + "%M"] if timed else []) + list(cmd), stdin=fin,
+                                 stdout=subprocess.PIPE if capture and not out_path else fout, stderr=ferr, env=env)
+            out = p.stdout.read() if p.stdout else None
+            _, status, usage = os.wait4(p.pid, 0)  # the child's own resource usage, not all children's
+            self.wall = time.perf_counter() - t0
+            p.returncode = os.waitstatus_to_exitcode(status)
+            if p.stdout:
+                p.stdout.close()
+            ferr.seek(0)
+            err = ferr.read().decode(errors="replace").splitlines(keepends=True)
+        self.out = out.decode() if out is not None else None
+        self.cpu = usage.ru_utime + usage.ru_stime  # GNU time's and its child's
+        ours = [l for l in err if l.startswith((MAX_RSS, "Command exited with", "Command terminated by"))] if timed else []
+        rss = [l for l in ours if l.startswith(MAX_RSS)]
+        self.max_rss_mb = int(rss[-1][len(MAX_RSS):]) / 1024 if rss else None
+        self.err = "".join(l for l in err if l not in ours)
+        self.returncode = p.returncode
+        if check and p.returncode != 0:
+            sys.exit("bench: command failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), self.err))
 
 
 def best_of(n, cmd, stdin_path, env=None):
@@ -97,6 +109,14 @@ def find_radiance():
     if os.path.isdir(lib):
         env["RAYPATH"] = ".:" + lib
     return {"rtrace": rt, "oconv": oc, "env": env, "dir": cand}
+
+
+def frozen_octree(rad, tmp):
+    """Radiance's octree of the office in tmp, frozen (oconv -f) so that it does not depend on the working directory."""
+    path = os.path.join(tmp, "office.oct")
+    with open(path, "wb") as f:
+        subprocess.run([rad["oconv"], "-f", SCENE], stdout=f, env=rad["env"], check=True)
+    return path
 
 
 def git_commit():
@@ -334,10 +354,7 @@ def main():
     rad = find_radiance()
     with tempfile.TemporaryDirectory(prefix="brume-bench-") as tmp:
         if rad:
-            rad["oct"] = os.path.join(tmp, "office.oct")
-            with open(rad["oct"], "wb") as f:
-                # frozen (-f), so that the octree does not depend on the working directory
-                subprocess.run([rad["oconv"], "-f", SCENE], stdout=f, env=rad["env"], check=True)
+            rad["oct"] = frozen_octree(rad, tmp)
             print("Radiance: %s (octree made with its oconv -f in %s)" % (rad["dir"], tmp))
         else:
             print("Radiance not found, skipped (looked in $RADIANCE_BIN, then /tmp/radiance/bin)")

@@ -9,7 +9,6 @@ import argparse
 import hashlib
 import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
@@ -155,16 +154,22 @@ def luminance(rgb):
 
 # ---------------------------------------------------------------- the reference
 
-def scene_key(ab, view):
+def scene_key(view, common, options):
     """What a reference depends on, hashed: the scene, the view, the resolution and the reference's options."""
-    text = json.dumps([bench.sha256(bench.SCENE), VIEWS[view][1], COMMON, REFERENCE[ab], REF_RUNS])
+    text = json.dumps([bench.sha256(bench.SCENE), VIEWS[view][1], common, options, REF_RUNS])
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 def reference(brume_rpict, ab, view, tmp, remake):
-    """The converged picture: (mean RGB, per-pixel standard error of the mean luminance, metadata); cached."""
-    name = os.path.join(CACHE, "%s_ab%d" % (view, ab))
-    key = scene_key(ab, view)
+    """The converged picture of a case of this bench: see converged."""
+    return converged(brume_rpict, "%s_ab%d" % (view, ab), view, COMMON, REFERENCE[ab], tmp, remake)
+
+
+def converged(brume_rpict, name, view, common, options, tmp, remake, prefix=()):
+    """The converged picture, the mean of REF_RUNS runs of Brume's rpict (command prefix, e.g. nice, then the view,
+    common and options), cached as CACHE/name: (mean RGB, per-pixel standard error of the mean luminance, metadata)."""
+    name = os.path.join(CACHE, name)
+    key = scene_key(view, common, options)
     if not remake and os.path.exists(name + ".npz") and os.path.exists(name + ".json"):
         meta = json.load(open(name + ".json"))
         if meta.get("key") == key:
@@ -172,13 +177,13 @@ def reference(brume_rpict, ab, view, tmp, remake):
             return d["rgb"], d["se"], meta
         print("  %s is out of date (scene, view or options changed): remaking it" % os.path.relpath(name, bench.ROOT))
     threads = os.cpu_count() or 1
-    cmd = [brume_rpict] + VIEWS[view][1] + COMMON + REFERENCE[ab] + ["-u+", "-n", str(threads), bench.SCENE]
+    cmd = [brume_rpict] + VIEWS[view][1] + common + options + ["-u+", "-n", str(threads), bench.SCENE]
     print("  making the reference %s: the mean of %d runs of rpict %s (cached in %s)" % (
         os.path.basename(name), REF_RUNS, " ".join(cmd[1:-1]), os.path.relpath(CACHE, bench.ROOT)), flush=True)
     runs, wall = [], 0.0
     out = os.path.join(tmp, "reference.hdr")
     for k in range(REF_RUNS):
-        t = bench.Timer(cmd, os.devnull, out_path=out)
+        t = bench.Timer(list(prefix) + cmd, os.devnull, out_path=out)
         wall += t.wall
         runs.append(read_picture(out))
         print("    run %d/%d: %.0f s" % (k + 1, REF_RUNS, t.wall), flush=True)
@@ -204,15 +209,16 @@ def reference(brume_rpict, ab, view, tmp, remake):
 
 # ---------------------------------------------------------------- measurements
 
-def errors(rgb, ref):
-    """RMS and 99th percentile of the relative error of pixel luminance, and the bias of the mean, in %."""
+def errors(rgb, ref, percentile=99):
+    """RMS and a percentile (99th) of the relative error of pixel luminance, and the bias of the mean, in %; rgb is a
+    picture or its luminance."""
     lr = luminance(ref)
     mask = lr > FLOOR * lr.mean()
-    lum = luminance(rgb)
+    lum = luminance(rgb) if rgb.ndim == 3 else rgb
     if lum.shape != lr.shape:
         sys.exit("bench/rpict.py: picture of %s pixels, the reference has %s" % (lum.shape, lr.shape))
     rel = (lum[mask] - lr[mask]) / lr[mask]
-    return (100 * float(np.sqrt(np.mean(rel ** 2))), 100 * float(np.percentile(np.abs(rel), 99)),
+    return (100 * float(np.sqrt(np.mean(rel ** 2))), 100 * float(np.percentile(np.abs(rel), percentile)),
             100 * float(lum[mask].sum() / lr[mask].sum() - 1))
 
 
@@ -287,16 +293,27 @@ def plot(results, refs, path):
                 s = " ".join(w for w in s.split() if w not in ("-ab", "1", "-aa", "0", "-as", "-ps")) if len(s) > 20 else s
                 ax.annotate(s, (t, e), fontsize=5, xytext=(2, 2), textcoords="offset points")
         ax.axhline(refs[key][1], color="grey", lw=0.8, ls=":", label="reference's own error")
-        ax.set_title("%s view, -ab %d" % key, fontsize=9)
-        ax.set_xlabel("CPU time per 320-wide picture (s)", fontsize=8)
-        ax.set_ylabel("RMS relative error of pixel luminance (%)", fontsize=8)
-        ax.grid(True, which="both", lw=0.3)
-        ax.tick_params(labelsize=7)
-        ax.legend(fontsize=5.5, loc="best")
-    fig.suptitle("rpict on examples/office: CPU time against error versus a converged Brume picture "
-                 "(Brume solid, Radiance 6.1 dashed)", fontsize=9)
+        label_axes(ax, "%s view, -ab %d" % key, "CPU time per 320-wide picture (s)",
+                   "RMS relative error of pixel luminance (%)", 5.5)
+    save_figure(fig, "rpict on examples/office: CPU time against error versus a converged Brume picture "
+                "(Brume solid, Radiance 6.1 dashed)", path, 110)
+
+
+def label_axes(ax, title, xlabel, ylabel, legend_size):
+    """The title, labels, grid and legend of a panel of time against error."""
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel(xlabel, fontsize=8)
+    ax.set_ylabel(ylabel, fontsize=8)
+    ax.grid(True, which="both", lw=0.3)
+    ax.tick_params(labelsize=7)
+    ax.legend(fontsize=legend_size, loc="best")
+
+
+def save_figure(fig, title, path, dpi):
+    import matplotlib.pyplot as plt
+    fig.suptitle(title, fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=dpi)
     plt.close(fig)
 
 
@@ -384,10 +401,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="brume-rpict-") as tmp:
         progs = {"brume": (brume, bench.SCENE, None)}
         if rad and os.access(os.path.join(rad["dir"], "rpict"), os.X_OK):
-            oct_ = os.path.join(tmp, "office.oct")
-            with open(oct_, "wb") as f:
-                subprocess.run([rad["oconv"], "-f", bench.SCENE], stdout=f, env=rad["env"], check=True)
-            progs["radiance"] = (os.path.join(rad["dir"], "rpict"), oct_, rad["env"])
+            progs["radiance"] = (os.path.join(rad["dir"], "rpict"), bench.frozen_octree(rad, tmp), rad["env"])
             print("Radiance: %s (octree made with its oconv -f; its time is not counted)" % rad["dir"])
         else:
             print("Radiance not found, skipped (set RADIANCE_BIN to the directory holding its rpict and oconv)")
