@@ -133,12 +133,13 @@ def git_commit():
 
 # ---------------------------------------------------------------- reference
 
-def load_reference():
-    """The cached reference, if it was made from the current scene and grid: list of lux, list of rel. SE."""
-    if not os.path.exists(REFERENCE):
+def load_reference(path=REFERENCE, options=REF_OPTIONS):
+    """The cached reference, if it was made from the current scene and grid with these options: list of lux,
+    list of rel. SE, metadata."""
+    if not os.path.exists(path):
         return None
     meta, lx, se = {}, [], []
-    with open(REFERENCE) as f:
+    with open(path) as f:
         for line in f:
             if line.startswith("#"):
                 if ":" in line:
@@ -150,15 +151,18 @@ def load_reference():
                 lx.append(float(v[6]))
                 se.append(float(v[7]) / 100)
     if meta.get("scene sha256") != sha256(SCENE) or meta.get("grid sha256") != sha256(GRID):
-        print("bench: %s was made for another scene or grid: remaking it" % os.path.relpath(REFERENCE, ROOT))
+        print("bench: %s was made for another scene or grid: remaking it" % os.path.relpath(path, ROOT))
+        return None
+    if not meta.get("command", "").startswith("rtrace " + " ".join(options) + " "):
+        print("bench: %s was made with other options: remaking it" % os.path.relpath(path, ROOT))
         return None
     return lx, se, meta
 
 
-def make_reference(rtrace, threads):
-    cmd = [rtrace] + REF_OPTIONS + ["-n", str(threads), SCENE]
+def make_reference(rtrace, threads, path=REFERENCE, options=REF_OPTIONS):
+    cmd = [rtrace] + options + ["-n", str(threads), SCENE]
     print("bench: making the reference (%d runs of: %s < grid.txt); this is done once and cached in %s"
-          % (REF_RUNS, " ".join(["rtrace"] + cmd[1:-1] + ["office.rad"]), os.path.relpath(REFERENCE, ROOT)))
+          % (REF_RUNS, " ".join(["rtrace"] + cmd[1:-1] + ["office.rad"]), os.path.relpath(path, ROOT)))
     runs, total, commit = [], 0.0, git_commit()
     for k in range(REF_RUNS):
         t = Timer(cmd, GRID)
@@ -169,11 +173,11 @@ def make_reference(rtrace, threads):
     n = len(pts)
     os.makedirs(RESULTS, exist_ok=True)
     lx, se = [], []
-    with open(REFERENCE, "w") as f:
+    with open(path, "w") as f:
         f.write("# Brume bench reference: converged irradiance at the sensors of examples/office/grid.txt\n")
         f.write("# made by bench/bench.py (make bench, or --remake-reference): the mean of independent runs of\n")
         f.write("# command: rtrace %s -n %d examples/office/office.rad < examples/office/grid.txt\n"
-                % (" ".join(REF_OPTIONS), threads))
+                % (" ".join(options), threads))
         f.write("# runs: %d\n" % REF_RUNS)
         f.write("# wall time: %.0f s\n" % total)
         f.write("# brume commit: %s (the source tree's HEAD when the reference was made)\n" % commit)
@@ -192,7 +196,7 @@ def make_reference(rtrace, threads):
             lx.append(m)
             se.append(s)
             f.write("%s %s %s %.6e %.6e %.6e %.3f %.3f\n" % (pts[i][0], pts[i][1], pts[i][2], *rgb, m, 100 * s))
-    return lx, se, {"runs": str(REF_RUNS), "command": "rtrace " + " ".join(REF_OPTIONS)}
+    return lx, se, {"runs": str(REF_RUNS), "command": "rtrace " + " ".join(options)}
 
 
 # ---------------------------------------------------------------- measurements

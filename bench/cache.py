@@ -2,8 +2,8 @@
 """Brume's headline benchmark: run time against error at -ab 5, irradiance caches against path tracing.
 
 Two parts on examples/office, each a set of ladders (families of settings, coarse to fine) timed on one thread and
-compared with a converged Brume reference: the 96-sensor grid with rtrace -I (reference bench/results/reference.txt,
-see bench.py) and a picture of the seated view with rpict (reference made once and cached, see rpict.py). Families:
+compared with a converged Brume reference with every bounce: the 96-sensor grid with rtrace -I (reference
+bench/results/reference_all_bounces.txt, made by bench.py's make_reference) and a picture of the seated view with rpict (reference made once and cached, see rpict.py). Families:
 Brume's defaults, Brume path tracing (-aa 0), Brume's adaptive cache (-aa > 0), Brume's classic cache
 (-acache classic), Radiance's cache and Radiance's path tracing. Radiance's runs are cached in
 bench/results/cache_radiance.json (by command, scene and machine), so that a rerun times only Brume.
@@ -39,10 +39,18 @@ RADIANCE_PICTURES = os.path.join(bench.RESULTS, "cache_radiance")  # their pictu
 GRID_COMMON = ["-I", "-h"]
 VIEW = "seated"
 IMAGE_COMMON = ["-x", "240", "-y", "240", "-pj", "0"]  # 240 x 163 pixels; pixel centres, as in rpict.py
-IMAGE_REFERENCE = ["-ab", "5", "-aa", "0", "-ad", "200", "-as", "0", "-ps", "1", "-ds", ".05", "-lw", "1e-5"]
+# References: the true answer, every bounce (path tracing ended by Russian roulette; -ab 50 is never reached).
+# Brume's cache lands there too (past -ab its paths go on by roulette); Radiance's -ab 5 stops near five bounces,
+# which counts as its error (about 0.8 % of the grid's light).
+GRID_REFERENCE = os.path.join(bench.RESULTS, "reference_all_bounces.txt")
+GRID_REFERENCE_OPTIONS = ["-I", "-h", "-ab", "50", "-aa", "0", "-ad", "8192", "-as", "0", "-ds", ".05", "-lw", "1e-6"]
+IMAGE_REFERENCE = ["-ab", "50", "-aa", "0", "-ad", "200", "-as", "0", "-ps", "1", "-ds", ".05", "-lw", "1e-5"]
 TARGET_RMS = 2.0  # the issue's goal on the grid, in %
 
-PT = ["-ab", "5", "-aa", "0", "-lw", "1e-5"]  # path tracing: -ad paths at the first bounce, one path after (Brume)
+# Path tracing: -ad paths at the first bounce, one path after; Brume's with every bounce (unbiased), Radiance's
+# with five (its -lr -10 would cap more anyway).
+PT = ["-ab", "50", "-aa", "0", "-lw", "1e-5"]
+RADIANCE_PT = ["-ab", "5", "-aa", "0", "-lw", "1e-5"]
 AA_LADDER = [(".3", "256"), (".2", "512"), (".15", "512"), (".1", "1024"), (".07", "1024"), (".05", "2048")]
 # Radiance's cache, coarse to fine, from the issue's values (-ab 2/3/6, -ad 512/2048/4096, -as 128/2048/4096,
 # -ar 16/64/128, -aa .25/.2/.1); "-ab 5" alone is the program's defaults (rtrace: -aa .1 -ar 256 -ad 1024 -as 512,
@@ -72,7 +80,7 @@ def families(part):
          [["-ab", "5", "-acache", "classic", "-aa", aa, "-ad", ad] for aa, ad in AA_LADDER]),
         ("radiance-cache", "Radiance cache", "radiance", RADIANCE_CACHE),
         ("radiance-pt", "Radiance path tracing", "radiance",
-         [PT + ps1 + ["-ad", str(a), "-as", str(a // 2)] for a in ads["radiance"]]),
+         [RADIANCE_PT + ps1 + ["-ad", str(a), "-as", str(a // 2)] for a in ads["radiance"]]),
     ]
 
 
@@ -132,19 +140,19 @@ class Part:
         return rms, p999
 
 
-def grid_reference():
-    refd = bench.load_reference()
+def grid_reference(brume_rtrace, remake):
+    refd = None if remake else bench.load_reference(GRID_REFERENCE, GRID_REFERENCE_OPTIONS)
     if refd is None:
-        sys.exit("bench/cache.py: no up-to-date %s: run bench.py first" % os.path.relpath(bench.REFERENCE, bench.ROOT))
+        refd = bench.make_reference(brume_rtrace, os.cpu_count() or 1, GRID_REFERENCE, GRID_REFERENCE_OPTIONS)
     ref, se, meta = refd
     noise = 100 * math.sqrt(sum(s * s for s in se) / len(se))
     return ref, noise, "%s (%s, mean of %s runs; own error RMS %.2f %%)" % (
-        os.path.relpath(bench.REFERENCE, bench.ROOT), meta.get("command", "?").split(" -n ")[0], meta.get("runs"), noise)
+        os.path.relpath(GRID_REFERENCE, bench.ROOT), meta.get("command", "?").split(" -n ")[0], meta.get("runs"), noise)
 
 
 def image_reference(brume_rpict, tmp, remake):
     # nice: the reference takes 10-20 minutes on two cores and should yield to anything else
-    rgb, se, meta = rpict.converged(brume_rpict, "%s_ab5_cache" % VIEW, VIEW, IMAGE_COMMON, IMAGE_REFERENCE, tmp,
+    rgb, se, meta = rpict.converged(brume_rpict, "%s_all_bounces" % VIEW, VIEW, IMAGE_COMMON, IMAGE_REFERENCE, tmp,
                                     remake, prefix=("nice", "-n", "19"))
     lr = rpict.luminance(rgb)
     mask = lr > rpict.FLOOR * lr.mean()
@@ -422,7 +430,7 @@ def main():
             part = Part(name, programs(brume_bin, rad, name, tmp), tmp)
             if name == "grid":
                 title = "grid: rtrace %s -ab 5 ... -n 1 < examples/office/grid.txt (96 sensors)" % " ".join(GRID_COMMON)
-                ref, noise[name], ref_text = grid_reference()
+                ref, noise[name], ref_text = grid_reference(os.path.join(brume_bin, "rtrace"), a.remake_reference)
             else:
                 title = "image: rpict %s %s -ab 5 ... (one thread)" % (" ".join(rpict.VIEWS[VIEW][1]), " ".join(IMAGE_COMMON))
                 ref, noise[name], ref_text = image_reference(os.path.join(brume_bin, "rpict"), tmp, a.remake_reference)
