@@ -69,16 +69,20 @@ FAMILIES = ["brume-default", "brume-pt", "brume-adaptive", "brume-classic", "rad
 
 
 def families(part):
-    """(name, label, program, [options of each rung]) of a part; pictures path trace with -ps 1, as in rpict.py."""
+    """(name, label, program, [options of each rung]) of a part. Pictures trace every pixel (-ps 1), as the
+    reference: -ps 4 interpolates tiles that straddle the edge of a luminaire at the picture's border (twenty
+    times the ceiling's luminance), which would swamp what is measured here."""
     ps1 = ["-ps", "1"] if part == "image" else []
     ads = PT_AD[part]
+    radiance_cache = RADIANCE_CACHE if part == "grid" else RADIANCE_CACHE[:4]  # the -ab 6 rungs: 40 min at -ps 1
     return [
-        ("brume-default", "Brume defaults", "brume", [["-ab", "5"]]),
+        ("brume-default", "Brume defaults", "brume", [["-ab", "5"] + ps1]),
         ("brume-pt", "Brume path tracing", "brume", [PT + ps1 + ["-ad", str(a)] for a in ads["brume"]]),
-        ("brume-adaptive", "Brume adaptive cache", "brume", [["-ab", "5", "-aa", aa, "-ad", ad] for aa, ad in AA_LADDER]),
+        ("brume-adaptive", "Brume adaptive cache", "brume",
+         [["-ab", "5", "-aa", aa, "-ad", ad] + ps1 for aa, ad in AA_LADDER]),
         ("brume-classic", "Brume classic cache", "brume",
-         [["-ab", "5", "-acache", "classic", "-aa", aa, "-ad", ad] for aa, ad in AA_LADDER]),
-        ("radiance-cache", "Radiance cache", "radiance", RADIANCE_CACHE),
+         [["-ab", "5", "-acache", "classic", "-aa", aa, "-ad", ad] + ps1 for aa, ad in AA_LADDER]),
+        ("radiance-cache", "Radiance cache", "radiance", [r + ps1 for r in radiance_cache]),
         ("radiance-pt", "Radiance path tracing", "radiance",
          [RADIANCE_PT + ps1 + ["-ad", str(a), "-as", str(a // 2)] for a in ads["radiance"]]),
     ]
