@@ -70,8 +70,9 @@ FAMILIES = ["brume-default", "brume-pt", "brume-adaptive", "brume-classic", "rad
 
 def families(part):
     """(name, label, program, [options of each rung]) of a part. Pictures trace every pixel (-ps 1), as the
-    reference: -ps 4 interpolates tiles that straddle the edge of a luminaire at the picture's border (twenty
-    times the ceiling's luminance), which would swamp what is measured here."""
+    reference: with -ps 4 a luminaire seen as a thin sliver at the picture's border is drawn by its coverage of
+    each pixel (small sources), the reference samples pixel centres, and the few pixels beside it (twenty times
+    the ceiling's luminance) would swamp what is measured here."""
     ps1 = ["-ps", "1"] if part == "image" else []
     ads = PT_AD[part]
     radiance_cache = RADIANCE_CACHE if part == "grid" else RADIANCE_CACHE[:4]  # the -ab 6 rungs: 40 min at -ps 1
