@@ -194,10 +194,12 @@ void IrradianceCache::insert(std::vector<IrradianceRecord> records) {
         geometry,
         [](const RTCBoundsFunctionArguments* args) {
             const IrradianceRecord& r = static_cast<const IrradianceCache*>(args->geometryUserPtr)->records_[args->primID];
-            double reach = std::max(r.radius[0], r.radius[1]) * 1.001 + 1e-6 * glm::length(r.point);
-            args->bounds_o->lower_x = float(r.point.x - reach), args->bounds_o->upper_x = float(r.point.x + reach);
-            args->bounds_o->lower_y = float(r.point.y - reach), args->bounds_o->upper_y = float(r.point.y + reach);
-            args->bounds_o->lower_z = float(r.point.z - reach), args->bounds_o->upper_z = float(r.point.z + reach);
+            // The zone is within the ellipsoid of semi-axes r0 (k1 and the normal) and r1 (k2): its box.
+            dvec3 k1 = r.axis * double(r.radius[0]), k2 = r.axis2() * double(r.radius[1]), n = r.normal * double(r.radius[0]);
+            dvec3 reach = glm::sqrt(k1 * k1 + k2 * k2 + n * n) * 1.001 + 1e-6 * glm::length(r.point);
+            args->bounds_o->lower_x = float(r.point.x - reach.x), args->bounds_o->upper_x = float(r.point.x + reach.x);
+            args->bounds_o->lower_y = float(r.point.y - reach.y), args->bounds_o->upper_y = float(r.point.y + reach.y);
+            args->bounds_o->lower_z = float(r.point.z - reach.z), args->bounds_o->upper_z = float(r.point.z + reach.z);
         },
         nullptr);
     rtcCommitGeometry(geometry);
