@@ -129,11 +129,8 @@ class Rpict {
 public:
     Rpict(const Options& o, const Scene& scene, std::vector<std::string> command)
         : o_(o), scene_(scene), renderScene_(scene, o.render.materials), command_(std::move(command)),
-          progress_("rpict", o.reportInterval), cache_(makeCache(renderScene_, o.render)) {
-        if (o.render.cacheFile.empty()) return;
-        if (cache_) cacheFile_.emplace(o.render.cacheFile, scene, o.render, cache_);
-        else warn("-af " + o.render.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
-    }
+          progress_("rpict", o.reportInterval), cache_(makeCache(renderScene_, o.render)),
+          cacheFile_(openCacheFile(scene, o.render, cache_)) {}
 
     void render(const Frame& f) {
         f.view.validate();
@@ -175,7 +172,7 @@ private:
     std::vector<std::string> command_;
     ProgressMeter progress_;
     std::shared_ptr<IrradianceCache> cache_;
-    std::optional<PersistentCache> cacheFile_;
+    std::unique_ptr<PersistentCache> cacheFile_;
     int framesOnOutput_ = 0;
 };
 

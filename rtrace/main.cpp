@@ -4,7 +4,6 @@
 #include <bit>
 #include <cstdio>
 #include <iostream>
-#include <optional>
 
 #include "integrator/integrator.h"
 #include "integrator/persistent_cache.h"
@@ -102,11 +101,7 @@ int run(int argc, char** argv) {
     Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
     Integrator integrator(renderScene, o.render);
-    std::optional<PersistentCache> cacheFile;
-    if (!o.render.cacheFile.empty()) {
-        if (integrator.cache()) cacheFile.emplace(o.render.cacheFile, scene, o.render, integrator.cache());
-        else warn("-af " + o.render.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
-    }
+    std::unique_ptr<PersistentCache> cacheFile = openCacheFile(scene, o.render, integrator.cache());
     ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene);
     if (o.header) writeHeader(scene, line->command, writer, o.outFormat);
     if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);

@@ -49,13 +49,7 @@ public:
     }
     float radiance(int index, int channel) const { return radiance_[size_t(index) * channels_ + channel]; }
     // The sample's radiance with Radiance's luminance weights (brightness() in spectrum.h).
-    float brightness(int index) const {
-        const float* v = &radiance_[size_t(index) * channels_];
-        if (channels_ == 3) return 0.265f * v[0] + 0.670f * v[1] + 0.065f * v[2];
-        float sum = 0;
-        for (int c = 0; c < channels_; ++c) sum += v[c];
-        return sum / channels_;
-    }
+    float brightness(int index) const { return brightnessOf(&radiance_[size_t(index) * channels_], channels_); }
     double distance(int index) const { return distance_[index]; }
     const dvec3& direction(int index) const { return direction_[index]; }
 

@@ -127,12 +127,7 @@ double predicted(const HemisphereSamples& hs, const dvec3& p) {
     return sum;
 }
 
-double brightnessOf(const std::vector<double>& v) {
-    if (v.size() == 3) return 0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2];
-    double s = 0;
-    for (double x : v) s += x;
-    return v.empty() ? 0 : s / v.size();
-}
+double brightnessOf(const std::vector<double>& v) { return brume::brightnessOf(v, int(v.size())); }
 
 Tangent brightnessOf(const std::vector<Tangent>& v) {
     std::vector<double> x(v.size()), y(v.size());

@@ -34,15 +34,17 @@ int Integrator::thresholdedCount(int count, double share) const {
     return std::max(1, int(std::ceil(count * share / threshold)));
 }
 
+// Whether next-event estimation samples the light from a point of `surface` (not the source's own surface).
+bool Integrator::samplesSource(const Light& light, const SurfaceId& surface) const {
+    return light.emitter().isDirectSource() && !(surface && light.surface() == surface);
+}
+
 // Every source sample. Diffuse lobes take their source light from here alone, as in Radiance (a few
 // stratified shadow rays beat thousands of diffuse rays that rarely find a small source); glossy lobes
 // that are also sampled by rays share it with them by the power heuristic.
 Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                             Context& ctx) const {
     const std::vector<Light>& lights = scene_.lights();
-    auto sampled = [&](const Light& light) {
-        return light.emitter().isDirectSource() && !(surface && light.surface() == surface);
-    };
     if (state.ambientLevel > 0 && !lobes.sampleGlossy && !lobes.sampleGlossyTrans && !(lobes.general && lobes.sampleGeneral))
         if (auto one = oneSourceOf(sh, lobes, surface, state, ctx)) return *one;
     // Diffuse light of uniform sources: their unoccluded value in closed form (see directFrom), and how
@@ -52,13 +54,13 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const Surface
     double total = 0;
     if (exactDirect(state) && !lobes.diffuse.isBlack() && !lobes.fresnelDiffuse)
         for (size_t i = 0; i < lights.size(); ++i) {
-            if (!sampled(lights[i])) continue;
+            if (!samplesSource(lights[i], surface)) continue;
             closedForm[i] = lights[i].unoccludedIrradiance(sh.point, sh.normal);
             total += std::max(0.0, closedForm[i]) * brightness(lights[i].emitter().radiance);
         }
     Spectrum sum(0.f);
     for (size_t i = 0; i < lights.size(); ++i) {
-        if (!sampled(lights[i])) continue;
+        if (!samplesSource(lights[i], surface)) continue;
         double share = closedForm[i] > 0 && total > 0 ? closedForm[i] * brightness(lights[i].emitter().radiance) / total : 1.0;
         sum += directFrom(lights[i], closedForm[i], share, sh, lobes, surface, state, ctx);
     }
@@ -80,7 +82,7 @@ std::optional<Spectrum> Integrator::oneSourceOf(const Shading& sh, const Lobes& 
     int candidates = 0;
     for (size_t i = 0; i < lights.size(); ++i) {
         const Light& light = lights[i];
-        if (!light.emitter().isDirectSource() || (surface && light.surface() == surface)) continue;
+        if (!samplesSource(light, surface)) continue;
         guess[i] = light.roughSolidAngle(sh.point) * std::max(1e-30f, brightness(light.emitter().radiance));
         total += guess[i];
         ++candidates;

@@ -116,6 +116,7 @@ private:
                                 const SurfaceHit* hit, Spectrum* misEmission) const;
     Spectrum direct(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                     Context& ctx) const;
+    bool samplesSource(const Light& light, const SurfaceId& surface) const;
     std::optional<Spectrum> oneSourceOf(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
                                         const PathState& state, Context& ctx) const;
     Spectrum directFrom(const Light& light, double closedForm, double share, const Shading& sh, const Lobes& lobes,

@@ -4,6 +4,7 @@
 
 #include "integrator/render_options.h"
 #include "scene/scene_hash.h"
+#include "util/error.h"
 
 namespace brume {
 
@@ -23,6 +24,14 @@ std::string cacheOptions(const RenderSettings& settings) {
         text += " " + option;
     }
     return text;
+}
+
+std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings,
+                                               const std::shared_ptr<IrradianceCache>& cache) {
+    if (settings.cacheFile.empty()) return nullptr;
+    if (cache) return std::make_unique<PersistentCache>(settings.cacheFile, scene, settings, cache);
+    warn("-af " + settings.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
+    return nullptr;
 }
 
 PersistentCache::PersistentCache(const std::string& path, const Scene& scene, const RenderSettings& settings,

@@ -15,6 +15,13 @@ namespace brume {
 // options is refused.
 std::string cacheOptions(const RenderSettings& settings);
 
+class PersistentCache;
+
+// The -af file of these settings for `cache`, opened (null when -af is not given, or, with a warning, when
+// there is no cache to keep: -ab or -aa 0).
+std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings,
+                                               const std::shared_ptr<IrradianceCache>& cache);
+
 class PersistentCache {
 public:
     // Opens (or creates) `path` for this scene and these settings, and loads its records into `cache`.

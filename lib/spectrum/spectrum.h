@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <type_traits>
 
 namespace brume {
 
@@ -93,9 +94,17 @@ private:
     float v_[kMaxChannels];
 };
 
-// Radiance's luminance weights of its RGB primaries (the "bright" of color.h): Y = .265 R + .670 G + .065 B.
-inline float brightness(const Spectrum& s) {
-    return s.size() == 3 ? 0.265f * s[0] + 0.670f * s[1] + 0.065f * s[2] : s.average();
+// Radiance's luminance weights of its RGB primaries (the "bright" of color.h): Y = .265 R + .670 G + .065 B;
+// the mean of the channels beyond RGB. For any n channels v[0 … n-1] (a spectrum, or values stored apart).
+template <class Channels>
+auto brightnessOf(const Channels& v, int n) {
+    using T = std::decay_t<decltype(v[0])>;
+    if (n == 3) return T(0.265) * v[0] + T(0.670) * v[1] + T(0.065) * v[2];
+    T sum = 0;
+    for (int i = 0; i < n; ++i) sum += v[i];
+    return sum / T(n);
 }
+
+inline float brightness(const Spectrum& s) { return brightnessOf(s, s.size()); }
 
 }  // namespace brume
