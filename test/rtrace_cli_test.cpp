@@ -239,6 +239,17 @@ const char* kRoomWalls =
     "grey polygon wall 0 0 12 -5 -5 0 -5 5 0 -5 5 4 -5 -5 4\n"
     "grey polygon ceiling 0 0 12 -5 -5 4 -5 5 4 5 5 4 5 -5 4\n";
 
+// -af without a cache to keep (-ab 0, -aa 0): a warning, and no file is made.
+TEST_F(RtraceCli, CacheFileWithoutACacheIsIgnoredWithAWarning) {
+    for (const char* opts : {"-ab 0", "-ab 2 -aa 0"}) {
+        fs::remove(brume_test::scratchDir("cli") / "none.af");
+        Output r = rtrace(std::string("-h -I ") + opts + " -af none.af s.rad", "0 0 1 0 0 1\n");
+        EXPECT_EQ(r.status, 0) << opts;
+        EXPECT_NE(r.err.find("-af none.af ignored"), std::string::npos) << opts << ": " << r.err;
+        EXPECT_FALSE(fs::exists(brume_test::scratchDir("cli") / "none.af")) << opts;
+    }
+}
+
 // A cache file is never reused for other options or another scene: rtrace stops and says which.
 TEST_F(RtraceCli, CacheFilesOfOtherOptionsOrScenesAreRefused) {
     writeScene("room.rad", std::string(kScene) + kRoomWalls);
