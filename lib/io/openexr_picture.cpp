@@ -1,4 +1,4 @@
-#include "io/openexr_picture.h"
+#include "io/openexr_file.h"
 
 #include <OpenEXR/ImfArray.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -28,7 +28,7 @@ namespace {
 
 // Radiance's WHTEFFICACY (color.h): lumens per watt of its equal-energy white, luminance = 179 × Y.
 constexpr double kWhiteEfficacy = 179;
-const char* const kChannels[3] = {"R", "G", "B"};
+const std::vector<std::string> kRgb = {"R", "G", "B"};
 
 // Radiance's default primaries (color.h STDPRIMS, the "nominal CRT" ones with an equal-energy white).
 const Imf::Chromaticities kRadiancePrimaries({0.640f, 0.330f}, {0.290f, 0.600f}, {0.150f, 0.060f},
@@ -119,12 +119,12 @@ void addDates(Imf::Header& h, const SortedHeader& s) {
         Imf::addUtcOffset(h, float(std::difftime(*dateSeconds(s.gmt), *dateSeconds(s.capDate))));
 }
 
-Imf::Header exrHeader(const Picture& p, ExrPixels pixels) {
+}  // namespace
+
+Imf::Header exrHeader(const Picture& p) {
     double aspect = headerProduct(p.header, "PIXASPECT="), exposure = headerProduct(p.header, "EXPOSURE=");
     if (!(aspect > 0) || !(exposure > 0)) throw std::runtime_error("bad PIXASPECT= or EXPOSURE= in the header");
     Imf::Header h(p.width, p.height, float(1 / aspect), Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
-    for (const char* name : kChannels)
-        h.channels().insert(name, Imf::Channel(pixels == ExrPixels::half ? Imf::HALF : Imf::FLOAT));
     SortedHeader s = sortHeader(p.header);
     Imf::addChromaticities(h, p.xyz ? kXyzPrimaries : s.primaries.value_or(kRadiancePrimaries));
     Imf::addWhiteLuminance(h, float(kWhiteEfficacy / exposure));
@@ -136,39 +136,56 @@ Imf::Header exrHeader(const Picture& p, ExrPixels pixels) {
     return h;
 }
 
-// ---- writing, through a temporary file ----
+namespace {
 
-// OpenEXR converts pixel types when reading but not when writing: the frame buffer has the file's type.
-template <class Pixel>
-void writePixels(const std::string& name, const Imf::Header& h, const std::vector<Pixel>& pixels, Imf::PixelType type,
-                 int width, int height) {
-    Imf::OutputFile file(name.c_str(), h);
-    Imf::FrameBuffer frame;
-    char* base = reinterpret_cast<char*>(const_cast<Pixel*>(pixels.data()));  // OutputFile only reads
-    for (int c = 0; c < 3; ++c)
-        frame.insert(kChannels[c], Imf::Slice(type, base + c * sizeof(Pixel), 3 * sizeof(Pixel),
-                                              3 * sizeof(Pixel) * size_t(width)));
-    file.setFrameBuffer(frame);
-    file.writePixels(height);
+// ---- pixels: channels interleaved in memory, as Picture::pixels has R, G, B ----
+
+// Slices for `names.size()` channels of `size`-byte values interleaved pixel by pixel, rows of the data
+// window `dw` from the top.
+void addSlices(Imf::FrameBuffer& frame, const std::vector<std::string>& names, const void* first, size_t size,
+               Imf::PixelType type, const Imath::Box2i& dw) {
+    size_t xStride = names.size() * size, yStride = xStride * size_t(dw.max.x - dw.min.x + 1);
+    for (size_t c = 0; c < names.size(); ++c)
+        frame.insert(names[c], Imf::Slice::Make(type, static_cast<const char*>(first) + c * size, dw, xStride, yStride));
 }
 
 // Half would turn values beyond its range into infinities (a sun's disc is ~10^7), which spread to every
 // pixel a filter touches; the largest half keeps them finite and as bright as half can say.
-std::vector<half> halves(const std::vector<float>& pixels) {
-    std::vector<half> h(pixels.size());
-    for (size_t i = 0; i < pixels.size(); ++i) h[i] = half(std::clamp(pixels[i], -kLargestHalf, kLargestHalf));
+std::vector<half> halves(const float* values, size_t n) {
+    std::vector<half> h(n);
+    for (size_t i = 0; i < n; ++i) h[i] = half(std::clamp(values[i], -kLargestHalf, kLargestHalf));
     return h;
 }
 
 }  // namespace
 
+void writeExrPicture(const std::string& path, Imf::Header header, const Picture& p, ExrPixels pixels,
+                     const std::vector<std::string>& moreNames, const float* more) {
+    // OpenEXR converts pixel types when reading but not when writing: the frame buffer has the file's type.
+    Imf::PixelType type = pixels == ExrPixels::half ? Imf::HALF : Imf::FLOAT;
+    size_t size = pixels == ExrPixels::half ? sizeof(half) : sizeof(float), count = size_t(p.width) * p.height;
+    std::vector<half> halfValues[2];  // the copies half pixels are written from
+    Imf::FrameBuffer frame;
+    auto add = [&](const std::vector<std::string>& names, const float* values, std::vector<half>& copy) {
+        for (const std::string& name : names) header.channels().insert(name, Imf::Channel(type));
+        if (pixels == ExrPixels::half) copy = halves(values, count * names.size());
+        addSlices(frame, names, pixels == ExrPixels::half ? static_cast<const void*>(copy.data()) : values, size, type,
+                  header.dataWindow());
+    };
+    add(kRgb, p.pixels.data(), halfValues[0]);
+    add(moreNames, more, halfValues[1]);
+    PendingFile file(path);
+    {
+        Imf::OutputFile out(file.name().c_str(), header);
+        out.setFrameBuffer(frame);
+        out.writePixels(p.height);
+    }
+    file.commit();
+}
+
 void writeOpenExrPicture(const std::string& path, const Picture& p, ExrPixels pixels) {
     try {
-        Imf::Header header = exrHeader(p, pixels);
-        PendingFile file(path);
-        if (pixels == ExrPixels::half) writePixels(file.name(), header, halves(p.pixels), Imf::HALF, p.width, p.height);
-        else writePixels(file.name(), header, p.pixels, Imf::FLOAT, p.width, p.height);
-        file.commit();
+        writeExrPicture(path, exrHeader(p), p, pixels);
     } catch (const std::exception& e) {
         throw Error("cannot write " + path + ": " + e.what());
     }
@@ -236,17 +253,6 @@ void readHeaderLines(const Imf::Header& h, Picture& p) {
     if (Imf::hasChromaticities(h) && !p.xyz) lines.push_back(primariesLine(Imf::chromaticities(h)));
 }
 
-// R, G, B as floats, exact whether stored as half or float.
-void readRgb(Imf::InputFile& file, Picture& p) {
-    Imath::Box2i dw = file.header().dataWindow();
-    size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(p.width);
-    char* base = reinterpret_cast<char*>(p.pixels.data()) - dw.min.x * xStride - dw.min.y * yStride;
-    Imf::FrameBuffer frame;
-    for (int c = 0; c < 3; ++c) frame.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
-    file.setFrameBuffer(frame);
-    file.readPixels(dw.min.y, dw.max.y);
-}
-
 // Pictures without R, G, B (luminance alone, or luminance and chroma): the RGBA interface converts them.
 void readLuminanceChroma(const std::string& path, Picture& p) {
     Imf::RgbaInputFile file(path.c_str());
@@ -265,19 +271,36 @@ void readLuminanceChroma(const std::string& path, Picture& p) {
 
 }  // namespace
 
+Picture exrPicture(const Imf::Header& h) {
+    Picture p;
+    p.width = h.dataWindow().max.x - h.dataWindow().min.x + 1;
+    p.height = h.dataWindow().max.y - h.dataWindow().min.y + 1;
+    if (double(p.width) * p.height > kMaxPicturePixels) throw std::runtime_error("picture too large");
+    p.pixels.resize(size_t(p.width) * p.height * 3);
+    readHeaderLines(h, p);
+    return p;
+}
+
+void readExrPixels(Imf::InputFile& file, const std::string& path, Picture& p, const std::vector<std::string>& moreNames,
+                   float* more) {
+    const Imath::Box2i& dw = file.header().dataWindow();
+    const Imf::ChannelList& channels = file.header().channels();
+    bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+    Imf::FrameBuffer frame;
+    if (rgb) addSlices(frame, kRgb, p.pixels.data(), sizeof(float), Imf::FLOAT, dw);
+    addSlices(frame, moreNames, more, sizeof(float), Imf::FLOAT, dw);
+    if (frame.begin() != frame.end()) {
+        file.setFrameBuffer(frame);
+        file.readPixels(dw.min.y, dw.max.y);
+    }
+    if (!rgb) readLuminanceChroma(path, p);
+}
+
 Picture readOpenExrPicture(const std::string& path) {
     try {
         Imf::InputFile file(path.c_str());
-        const Imf::Header& h = file.header();
-        Picture p;
-        p.width = h.dataWindow().max.x - h.dataWindow().min.x + 1;
-        p.height = h.dataWindow().max.y - h.dataWindow().min.y + 1;
-        if (double(p.width) * p.height > kMaxPicturePixels) throw std::runtime_error("picture too large");
-        p.pixels.resize(size_t(p.width) * p.height * 3);
-        readHeaderLines(h, p);
-        const Imf::ChannelList& channels = h.channels();
-        if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B")) readRgb(file, p);
-        else readLuminanceChroma(path, p);
+        Picture p = exrPicture(file.header());
+        readExrPixels(file, path, p);
         return p;
     } catch (const std::exception& e) {
         throw Error(path + ": " + e.what());

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfRgbaFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
@@ -12,55 +14,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include "exr_test_files.h"
 #include "util/error.h"
 
 using namespace brume;
+using namespace brume_test;
 namespace fs = std::filesystem;
-
-namespace {
-
-// rpict's header, as Radiance 6.1 writes it, one hour east of Greenwich.
-const std::vector<std::string> kRpictHeader = {
-    "oconv s.rad",
-    "rpict -x 8 -y 8 -vp 0 0 0 -vd 0 1 0",
-    "SOFTWARE= RADIANCE 6.1a 2026-11-23 LBNL (6.1.bcffc2b52d)",
-    "VIEW= -vtv -vp 0 0 0 -vd 0 1 0 -vu 0 0 1 -vh 45 -vv 45 -vo 0 -va 0 -vs 0 -vl 0",
-    "PIXASPECT=1.125000",
-    "CAPDATE= 2026:11:23 15:02:04",
-    "GMT= 2026:11:23 14:02:04",
-    "PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333"};
-
-// Values spanning many octaves, none repeated, so that nothing survives a mix-up of rows or channels.
-Picture rendered(int w, int h, std::vector<std::string> header = kRpictHeader) {
-    Picture p;
-    p.width = w;
-    p.height = h;
-    p.header = std::move(header);
-    p.pixels.resize(size_t(w) * h * 3);
-    for (size_t i = 0; i < p.pixels.size(); ++i) p.pixels[i] = float(std::ldexp(1.0 + 0.001 * double(i % 997), int(i % 23) - 11));
-    return p;
-}
-
-// A fresh directory for each test, removed with what is in it.
-struct ScratchDir {
-    fs::path path = fs::path(testing::TempDir()) /
-                    ("brume_exr_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    ScratchDir() {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~ScratchDir() { fs::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    size_t entries() const { return size_t(std::distance(fs::directory_iterator(path), fs::directory_iterator())); }
-};
-
-const std::string& stringAttribute(const Imf::Header& h, const char* name) {
-    const auto* a = h.findTypedAttribute<Imf::StringAttribute>(name);
-    static const std::string missing = "(missing)";
-    return a ? a->value() : missing;
-}
-
-}  // namespace
 
 TEST(OpenExrPicture, FloatPixelsComeBackExactlyAtOddResolutions) {
     ScratchDir dir;
@@ -174,6 +133,29 @@ TEST(OpenExrPicture, ForeignPixelAspectBecomesAPixaspectLine) {
     Picture q = readPicture(dir.file("wide.exr"));
     EXPECT_EQ(q.header, std::vector<std::string>{"PIXASPECT=0.500000"});
     EXPECT_EQ(q.pixels, (std::vector<float>{1, 2, 3}));
+}
+
+// A data window away from the origin (a crop of a larger frame) is the picture.
+TEST(OpenExrPicture, DataWindowAwayFromTheOriginIsThePicture) {
+    ScratchDir dir;
+    {
+        std::vector<float> rgb = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+        Imath::Box2i window({-3, 5}, {-2, 6});
+        Imf::Header h(Imath::Box2i({0, 0}, {9, 9}), window);
+        Imf::FrameBuffer frame;
+        const char* name[] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c) {
+            h.channels().insert(name[c], Imf::Channel(Imf::FLOAT));
+            frame.insert(name[c], Imf::Slice::Make(Imf::FLOAT, &rgb[c], window, 3 * sizeof(float), 6 * sizeof(float)));
+        }
+        Imf::OutputFile file(dir.file("crop.exr").c_str(), h);
+        file.setFrameBuffer(frame);
+        file.writePixels(2);
+    }
+    Picture q = readPicture(dir.file("crop.exr"));
+    ASSERT_EQ(q.width, 2);
+    ASSERT_EQ(q.height, 2);
+    EXPECT_EQ(q.pixels, (std::vector<float>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
 }
 
 TEST(OpenExrPicture, FailedWriteLeavesNothingUnderAnyName) {
