@@ -1,8 +1,6 @@
 #include "cal/library.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "cal/builtins.h"
 #include "cal/embedded.h"
@@ -29,16 +27,6 @@ bool sameDefinition(const Definition& a, const Definition& b) {
     return a.params == b.params && a.constant == b.constant && sameExpr(a.body, b.body);
 }
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-const EmbeddedFile* findEmbedded(std::string_view name) { return brume::findEmbedded(embeddedCalFiles(), name); }
-
 }  // namespace
 
 // Radiance's calcontext: the name without a ".cal" suffix, characters that cannot be in a name replaced
@@ -57,17 +45,13 @@ Scope scopeOfFile(std::string_view name) {
     return {context};
 }
 
-Library::Library() { loadText(findEmbedded("rayinit.cal")->text, "rayinit.cal"); }
+Library::Library() { loadText(findEmbedded(embeddedCalFiles(), "rayinit.cal")->text, "rayinit.cal"); }
 
 Scope Library::loadFile(const std::string& name, const SourceLocation& where) {
     Scope scope = scopeOfFile(name);
     if (scope.context.empty() || loaded_.count(scope.context)) return scope;
-    if (std::string path = findOnRayPath(name); !path.empty())
-        loadText(readFile(path), path, scope);
-    else if (const EmbeddedFile* file = findEmbedded(name))
-        loadText(file->text, name, scope);
-    else
-        throw Error(where, "cannot find function file \"" + name + "\"");
+    FileText file = readLibraryFile(name, embeddedCalFiles(), "function file", where);
+    loadText(file.text, file.origin, scope);
     loaded_.insert(scope.context);
     return scope;
 }

@@ -1,39 +1,14 @@
 #include "cal/library.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <optional>
 
 #include "cal/testing.h"
+#include "ray_path_dir.h"
 
 namespace brume::cal {
 namespace {
 
 using testing::Calc;
-namespace fs = std::filesystem;
-
-// A scratch directory on RAYPATH (alone) for the life of the object.
-class RayPathDir {
-public:
-    RayPathDir() : dir_(fs::temp_directory_path() / ("brume_cal_" + std::to_string(getpid()))) {
-        fs::create_directories(dir_);
-        if (const char* old = std::getenv("RAYPATH")) old_ = old;
-        setenv("RAYPATH", dir_.c_str(), 1);
-    }
-    ~RayPathDir() {
-        old_ ? setenv("RAYPATH", old_->c_str(), 1) : unsetenv("RAYPATH");
-        fs::remove_all(dir_);
-    }
-    void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
-
-private:
-    fs::path dir_;
-    std::optional<std::string> old_;
-};
 
 TEST(CalLibrary, FilesHaveTheirOwnContextAsInRadiance) {
     EXPECT_EQ(scopeOfFile("skybright.cal").context, "`skybright");

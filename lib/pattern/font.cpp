@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
-#include <sstream>
 
 #include "pattern/embedded_fonts.h"
 #include "scene/raypath.h"
@@ -109,14 +107,6 @@ std::vector<uint8_t> readVertices(Words& words, int code) {
     return xy;
 }
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open font file \"" + path + "\"");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 }  // namespace
 
 Font Font::parse(std::string_view text, const std::string& origin) {
@@ -140,9 +130,8 @@ Font Font::parse(std::string_view text, const std::string& origin) {
 }
 
 Font loadFont(const std::string& name, const SourceLocation& where) {
-    if (std::string path = findOnRayPath(name); !path.empty()) return Font::parse(readFile(path), path);
-    if (const EmbeddedFile* f = findEmbedded(embeddedFontFiles(), name)) return Font::parse(f->text, name);
-    throw Error(where, "cannot find font file \"" + name + "\"");
+    FileText file = readLibraryFile(name, embeddedFontFiles(), "font file", where);
+    return Font::parse(file.text, file.origin);
 }
 
 }  // namespace brume

@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string_view>
 
 namespace brume {
@@ -34,6 +36,20 @@ std::string findOnRayPath(const std::string& name) {
         if (colon == std::string_view::npos) return {};
         path.remove_prefix(colon + 1);
     }
+}
+
+FileText readLibraryFile(const std::string& name, std::span<const EmbeddedFile> shipped, const std::string& kind,
+                         const SourceLocation& where) {
+    if (std::string path = findOnRayPath(name); !path.empty()) {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) throw Error("cannot open " + kind + " \"" + path + "\"");
+        std::ostringstream text;
+        text << in.rdbuf();
+        return {path, text.str()};
+    }
+    if (const EmbeddedFile* file = findEmbedded(shipped, name)) return {name, std::string(file->text)};
+    std::string what = "cannot find " + kind + " \"" + name + "\"";
+    throw where.file.empty() ? Error(what) : Error(where, what);
 }
 
 }  // namespace brume
