@@ -115,6 +115,7 @@ int run(int argc, char** argv) {
     auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\n");
     if (!line) return 0;
     checkRenderSettings(o.render);
+    setSpectralSampling(o.render.sampling);
     if (o.render.cacheFile.empty()) throw Error("no cache file: give one with -af file");
     if (o.irradiance && o.picture.irradiance) throw Error("-I and -i are exclusive");
     if (picture) o.view.validate();

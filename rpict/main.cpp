@@ -57,12 +57,7 @@ OptionTable makeTable(Options& o) {
         if (a[0] != "h" && a[0] != "f") throw Error("bad OpenEXR pixel type '" + a[0] + "' for -ef (h or f)");
         o.exrFloat = a[0] == "f";
     }, [&o] { return std::string(o.exrFloat ? "f" : "h"); });
-    t.addAttached("-p", "output colour space: RGB or XYZ", [](const std::string& v) {
-        if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
-    }, [] { return std::string("RGB"); });
-    t.addUnsupported("-pc", 8, "output colour primaries");
-    t.addUnsupported("-cs", 1, "spectral samples");
-    t.addUnsupported("-cw", 2, "spectral range");
+    addColorOutputOptions(t, o.picture.color, false);
     t.addUnsupported("-r", 1, "recover from an interrupted picture");
     t.addUnsupported("-ro", 1, "recover into the same picture");
     t.addUnsupported("-P", 1, "persistent mode");
@@ -121,7 +116,8 @@ std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::st
         h.push_back(buf);
     }
     while (std::getline(software, line)) h.push_back(line);  // CAPDATE=, GMT=
-    h.push_back("PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333");  // Radiance's RGB
+    // Radiance's rpict names the primaries of every RGB picture, its own included.
+    if (p.color.kind == ColorOutput::Kind::Rgb) h.push_back(primariesLine(p.color.primaries));
     return h;
 }
 
@@ -162,7 +158,7 @@ private:
         bool laterFrame = picturePath.empty() && framesOnOutput_++ > 0;
         r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
         if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture, laterFrame);
-        else writePictureFile(picturePath, r.picture, o_.exrFloat);
+        else writePictureFile(picturePath, r.picture, o_.exrFloat, r.spectra.values.empty() ? nullptr : &r.spectra);
         if (p.depth) writeDepthFile(frameFileName(o_.depthOutput, f.number), r.depth);
     }
 
@@ -183,6 +179,7 @@ int run(int argc, char** argv) {
     auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\nDepthOfField\n");
     if (!line) return 0;
     checkRenderSettings(o.render);
+    setSpectralSampling(o.render.sampling);
     if (o.render.ambientBounces > 0 && o.render.ambientAccuracy == 0 && o.render.ambientDivisions > 64)
         warn("-aa 0: -ab " + std::to_string(o.render.ambientBounces) + " path-traces " +
              std::to_string(o.render.ambientDivisions) + " paths (-ad) from every pixel traced, a long run; "

@@ -22,6 +22,7 @@ struct Options {
     RenderSettings render;
     bool irradiance = false, irradianceAtHit = false, header = true, limitDistance = false;
     std::string outputSpec = "v";
+    ColorOutput color;
     char inFormat = 'a', outFormat = 'a';
     int xres = 0, yres = 0;
 };
@@ -49,14 +50,7 @@ OptionTable makeTable(Options& o) {
         o.outputSpec = v;
     }, [&o] { return o.outputSpec; });
     addRenderOptions(t, o.render, o.irradianceAtHit);
-    t.addAttached("-p", "output colour space: RGB (others not yet)", [](const std::string& v) {
-        if (v != "RGB") throw Error("output colour space -p" + v + " is not supported by Brume yet");
-    });
-    t.addUnsupported("-pc", 8, "output colour primaries");
-    t.addUnsupported("-cs", 1, "spectral samples");
-    t.addUnsupported("-cw", 2, "spectral range");
-    t.addAttached("-co", "spectral output (not supported yet)",
-                  [](const std::string&) { throw Error("option -co is not supported by Brume yet"); });
+    addColorOutputOptions(t, o.color, true);
     t.addAttached("-ap", "photon maps (not supported)",
                   [](const std::string&) { throw Error("photon maps (-ap) are not supported by Brume"); });
     t.addUnsupported("-am", 1, "photon search radius");
@@ -68,14 +62,17 @@ OptionTable makeTable(Options& o) {
 
 const char* const kUsage = "usage: rtrace [options] octree|scene.rad ... < rays\n";
 
-// Radiance's header: the octree's header, the command, the software, NCOMP and FORMAT.
-void writeHeader(const Scene& scene, const std::vector<std::string>& command, const ValueWriter& writer, char format) {
+// Radiance's header: the octree's header, the command, the software, NCOMP, WAVELENGTH_SPLITS or PRIMARIES,
+// and FORMAT.
+void writeHeader(const Scene& scene, const std::vector<std::string>& command, const ValueWriter& writer,
+                 const ColorOutput& color, char format) {
     std::string h;
     if (scene.headerLines.empty()) h += "#?RADIANCE\n";
     for (const std::string& line : scene.headerLines)
         if (line.rfind("FORMAT=", 0) != 0) h += line + "\n";
     h += commandLine(command) + "\n" + softwareAndDates();
     if (writer.components() > 0) h += "NCOMP=" + std::to_string(writer.components()) + "\n";
+    for (const std::string& line : color.headerLines()) h += line + "\n";
     if (format == 'f' || format == 'd') h += std::string("BigEndian=") + (std::endian::native == std::endian::big ? "1" : "0") + "\n";
     h += "FORMAT=" + writer.formatName();
     // Binary values start aligned in a file, as Radiance does it (not on pipes, which cannot tell where).
@@ -98,12 +95,13 @@ int run(int argc, char** argv) {
     if (!line) return 0;
     checkRenderSettings(o.render);
     if (o.irradiance && o.irradianceAtHit) throw Error("-I and -i are exclusive");
+    setSpectralSampling(o.render.sampling);
     Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
     Integrator integrator(renderScene, o.render);
     std::unique_ptr<PersistentCache> cacheFile = openCacheFile(scene, o.render, integrator.cache());
-    ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene);
-    if (o.header) writeHeader(scene, line->command, writer, o.outFormat);
+    ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene, o.color);
+    if (o.header) writeHeader(scene, line->command, writer, o.color, o.outFormat);
     if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);
 
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));

@@ -11,6 +11,7 @@
 
 #include "cli.h"
 #include "io/picture.h"
+#include "io/spectral_picture.h"
 
 namespace {
 
@@ -196,4 +197,33 @@ TEST_F(RpictCli, PixelsEqualVwraysThroughRtrace) {
     bool hasView = false;
     for (const std::string& line : p.header) hasView |= line.rfind("VIEW= -vtv -vp 0 -2 1 ", 0) == 0;
     EXPECT_TRUE(hasView);
+}
+
+// In bands, an .exr output is a spectral OpenEXR (spectral_picture.h): its bands are the pixels' spectra in
+// W·m⁻²·sr⁻¹·nm⁻¹ (Radiance's value × 179 / (683 ∫ȳ)), its R, G, B what rtrace -pRGB gives for the same rays.
+TEST_F(RpictCli, SpectralPicturesHoldEveryBand) {
+    std::string bin = BRUME_BIN_DIR, view = std::string(" -x 6 -y 5 -pa 0 ") + kView;
+    Output r = rpict("-cs 41 -pj 0 -ps 1 -ab 0 -o p.exr" + view + " s.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto [p, spectrum] = brume::readSpectralOpenExrPicture((dir() / "p.exr").string());
+    ASSERT_EQ(spectrum.wavelengths.size(), 41u);
+    EXPECT_NEAR(spectrum.wavelengths[0], 775.1219512, 1e-6);
+    auto vwrays = [&](const std::string& output) {
+        Output o = brume_test::runCaptured("cd " + dir().string() + " && " + bin + "/vwrays -fd" + view + " | " + bin +
+                                               "/rtrace -h -fdf -cs 41 -ab 0 -dt .05 -dc .5 -ds .25 -dr 1 -lr 7 -st .15 -u- " +
+                                               output + " s.rad",
+                                           dir());
+        std::vector<float> v(o.out.size() / sizeof(float));
+        std::memcpy(v.data(), o.out.data(), o.out.size());
+        return v;
+    };
+    std::vector<float> rgb = vwrays("-pRGB"), bands = vwrays("-co");
+    ASSERT_EQ(rgb.size(), p.pixels.size());
+    for (size_t i = 0; i < rgb.size(); ++i) EXPECT_NEAR(p.pixels[i], rgb[i], 1e-5 * (1 + rgb[i])) << "value " << i;
+    ASSERT_EQ(bands.size(), spectrum.values.size());
+    double perValue = 179 / (683.002 * 106.856895);  // ∫ȳ dλ of the CIE 1931 table at 1 nm
+    for (size_t i = 0; i < bands.size(); ++i)
+        EXPECT_NEAR(spectrum.values[i], bands[i] * perValue, 1e-4 * bands[i] * perValue + 1e-9) << "value " << i;
+    Output hdr = rpict("-cs 41 -pXYZ -ps 1" + view + " s.rad");
+    EXPECT_EQ(picture(hdr.out).xyz, true);
 }

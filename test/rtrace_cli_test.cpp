@@ -1,7 +1,6 @@
 // rtrace as a program: its output stream byte for byte, its options, its errors.
 #include <gtest/gtest.h>
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "cli.h"
@@ -371,10 +371,66 @@ TEST_F(RtraceCli, DistanceLimitAndBinaryInput) {
 
 // Options of later work are refused by name, not ignored.
 TEST_F(RtraceCli, OptionsNotSupportedYetAreRefusedByName) {
-    for (const char* opt : {"-ae mod", "-me .1 .1 .1", "-cs 41", "-ti mod", "-pY"}) {
+    for (const char* opt : {"-ae mod", "-me .1 .1 .1", "-ti mod"}) {
         Output r = rtrace(std::string(opt) + " s.rad", "0 0 1 0 0 -1\n");
         EXPECT_NE(r.status, 0) << opt;
         EXPECT_EQ(r.out, "") << opt;
         EXPECT_NE(r.err.find("not supported by Brume yet"), std::string::npos) << opt << ": " << r.err;
     }
+}
+
+TEST_F(RtraceCli, SpectralOutputsCarryRadiancesHeaderLines) {
+    Output r = rtrace("-cs 41 -co s.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\nNCOMP=41\nWAVELENGTH_SPLITS= 780 588 480 380\nFORMAT=ascii\n\n"), std::string::npos) << r.out;
+    std::istringstream values(r.out.substr(r.out.find("\n\n") + 2));
+    int n = 0;
+    for (double v; values >> v;) ++n;
+    EXPECT_EQ(n, 41);
+    Output y = rtrace("-cs 41 -pY s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_NE(y.out.find("\nNCOMP=1\nFORMAT=ascii\n\n"), std::string::npos) << y.out;
+    Output pc = rtrace("-pc .64 .33 .3 .6 .15 .06 .3127 .329 s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_NE(pc.out.find("\nPRIMARIES= 0.6400 0.3300 0.3000 0.6000 0.1500 0.0600 0.3127 0.3290\n"), std::string::npos)
+        << pc.out;
+    // -co with 3 samples is RGB, as Radiance's ("3 samples do not a spectrum make").
+    Output rgb = rtrace("-co s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_EQ(rgb.out.find("WAVELENGTH_SPLITS"), std::string::npos);
+    EXPECT_NE(rgb.out.find("\nNCOMP=3\n"), std::string::npos);
+}
+
+// -fc writes Radiance's common-exponent bytes: XYZE for -pXYZ, N mantissas and an exponent for spectra.
+TEST_F(RtraceCli, ColorFormatsFollowTheOutput) {
+    Output xyz = rtrace("-fac -pXYZ s.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(xyz.status, 0) << xyz.err;
+    EXPECT_NE(xyz.out.find("FORMAT=32-bit_rle_xyze\n\n"), std::string::npos);
+    Output spectra = rtrace("-fac -cs 12 -co s.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(spectra.status, 0) << spectra.err;
+    size_t body = spectra.out.find("FORMAT=Radiance_spectra\n\n");
+    ASSERT_NE(body, std::string::npos) << spectra.out;
+    EXPECT_EQ(spectra.out.size() - (body + 25), 13u);  // 12 mantissas and the exponent
+    Output one = rtrace("-fac -pY s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_NE(one.status, 0);
+    EXPECT_NE(one.err.find("color format incompatible with -pY"), std::string::npos) << one.err;
+}
+
+TEST_F(RtraceCli, SpectralSamplingIsCheckedAsRadianceDoes) {
+    for (const char* bad : {"-cs 2", "-cs 97", "-cw 500 520"}) {
+        Output r = rtrace(std::string(bad) + " s.rad", "0 0 1 0 0 -1\n");
+        EXPECT_NE(r.status, 0) << bad;
+        EXPECT_EQ(r.out, "") << bad;
+        EXPECT_NE(r.err.find("rtrace: "), std::string::npos) << bad << ": " << r.err;
+    }
+    Output p = rtrace("-pQ s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_NE(p.status, 0);
+    EXPECT_NE(p.err.find("bad output option -pQ"), std::string::npos) << p.err;
+}
+
+// A cache's records hold the bands they were made in: a file made in RGB is refused in bands.
+TEST_F(RtraceCli, CacheFilesKeepTheirSpectralSampling) {
+    std::filesystem::remove(brume_test::scratchDir("cli") / "bands.amb");
+    Output rgb = rtrace("-I -ab 1 -af bands.amb s.rad", "0 0 0.01 0 0 1\n");
+    ASSERT_EQ(rgb.status, 0) << rgb.err;
+    Output bands = rtrace("-I -ab 1 -cs 41 -af bands.amb s.rad", "0 0 0.01 0 0 1\n");
+    EXPECT_NE(bands.status, 0);
+    EXPECT_NE(bands.err.find("-cs 3 (now -cs 41)"), std::string::npos) << bands.err;
 }

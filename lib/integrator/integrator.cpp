@@ -9,6 +9,7 @@
 #include "integrator/path_state.h"
 #include "material/ward.h"
 #include "sampling/warp.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
@@ -26,6 +27,8 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
     double size = g.boundsMin().x <= g.boundsMax().x ? glm::length(g.boundsMax() - g.boundsMin()) : 1.0;
     epsilon_ = 1e-7 * size;
     if (!cache_) cache_ = makeCache(scene, settings);
+    const Spectrum& av = settings.ambientValue;
+    if (av.size() == 3) settings_.ambientValue = spectrumFromRgb(av[0], av[1], av[2]);
 }
 
 Integrator::~Integrator() = default;

@@ -1,5 +1,6 @@
 #include "integrator/render_options.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <thread>
@@ -57,10 +58,61 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addUnsupported("-ma", 3, "mist scattering albedo");
     t.addUnsupported("-mg", 1, "mist scattering eccentricity");
     t.addUnsupported("-ms", 1, "mist sampling distance");
+    addIntOption(t, "-cs", s.sampling.channels, "spectral samples (3: RGB; up to 96 bands)");
+    t.add("-cw", 2, "spectral range (nm)",
+          [&s](const auto& a) { s.sampling.shortest = toReal("-cw", a[0]), s.sampling.longest = toReal("-cw", a[1]); },
+          [&s] { return formatReal(s.sampling.shortest) + " " + formatReal(s.sampling.longest); });
     t.add("-T", 1, "scene time (s) for time-varying content", [&s](const auto& a) { s.time = toReal("-T", a[0]); },
           [&s] { return s.time ? formatReal(*s.time) : std::string("0 (none)"); });
     addIntOption(t, "-lr", s.maxReflections, "limit reflections (< 0: Russian roulette past |lr|)");
     addRealOption(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
+}
+
+void addColorOutputOptions(OptionTable& t, ColorOutput& o, bool values) {
+    using Kind = ColorOutput::Kind;
+    std::string kinds = values ? "RGB, XYZ, Y (photopic), S (scotopic), M (melanopic), MD65 (melanopic EDI), A (mean)"
+                               : "RGB or XYZ";
+    static const std::pair<const char*, Kind> names[] = {
+        {"RGB", Kind::Rgb},       {"XYZ", Kind::Xyz},   {"Y", Kind::Photopic}, {"S", Kind::Scotopic},
+        {"M", Kind::Melanopic}, {"MD65", Kind::MelanopicDaylight}, {"A", Kind::Mean}};
+    t.addAttached("-p", "output: " + kinds, [&o, values](const std::string& v) {
+        for (auto [name, kind] : names)
+            if (v == name && (values || kind == Kind::Rgb || kind == Kind::Xyz)) {
+                o.kind = kind, o.primaries = kRadiancePrimaries;
+                return;
+            }
+        throw Error("bad output option -p" + v + " (" + (values ? "-pRGB, -pXYZ, -pY, -pS, -pM, -pMD65, -pA" : "-pRGB, -pXYZ") + ")");
+    }, [&o] {
+        for (auto [name, kind] : names)
+            if (kind == o.kind) return std::string(name);
+        return std::string("RGB");  // spectral output: -co says so
+    });
+    t.add("-pc", 8, "output primaries: xr yr xg yg xb yb xw yw", [&o](const auto& a) {
+        const Primaries& r = kRadiancePrimaries;
+        const double radiance[8] = {r.red.x, r.red.y, r.green.x, r.green.y, r.blue.x, r.blue.y, r.white.x, r.white.y};
+        double v[8];
+        bool standard = true;  // within Radiance's tolerance of its own
+        for (int i = 0; i < 8; ++i) {
+            v[i] = toReal("-pc", a[size_t(i)]);
+            standard = standard && std::abs(v[i] - radiance[i]) <= .001;
+        }
+        Primaries p{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+        if (!standard && !validPrimaries(p)) throw Error("illegal primary chromaticities");
+        o.kind = Kind::Rgb, o.primaries = standard ? kRadiancePrimaries : p;
+    }, [&o] {
+        const Primaries& p = o.primaries;
+        std::string text;
+        for (double v : {p.red.x, p.red.y, p.green.x, p.green.y, p.blue.x, p.blue.y, p.white.x, p.white.y})
+            text += (text.empty() ? "" : " ") + formatReal(v);
+        return text;
+    });
+    if (!values) return;
+    t.addAttached("-co", "spectral output: every band (with -cs 3, RGB)", [&o](const std::string& v) {
+        bool on = v.empty() ? o.kind != Kind::Spectral : v == "+" || v == "1";
+        if (!on && !v.empty() && v != "-" && v != "0") throw Error("bad value '" + v + "' for option -co");
+        if (on) o.kind = Kind::Spectral;
+        else if (o.kind == Kind::Spectral) o.kind = Kind::Rgb;
+    }, [&o] { return std::string(o.kind == Kind::Spectral ? "+" : "-"); });
 }
 
 void usePictureDefaults(RenderSettings& s) {

@@ -5,12 +5,17 @@
 #include <vector>
 
 #include "integrator/settings.h"
+#include "spectrum/color_output.h"
 #include "util/options.h"
 
 namespace brume {
 
 // Registers the options that set `settings`; `irradianceAtHit` receives -i.
 void addRenderOptions(OptionTable& table, RenderSettings& settings, bool& irradianceAtHit);
+
+// The output colour options: -pRGB, -pXYZ and -pc (primaries) for both programs; with `values` (rtrace)
+// also -pY, -pS, -pM, -pMD65, -pA (one value) and -co (the spectrum). The last one given wins.
+void addColorOutputOptions(OptionTable& table, ColorOutput& output, bool values);
 
 // Radiance's rpict defaults, where they differ from rtrace's (fewer, coarser samples for pictures).
 void usePictureDefaults(RenderSettings& settings);

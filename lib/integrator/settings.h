@@ -6,6 +6,7 @@
 
 #include "cache/record_shape.h"
 #include "material/material.h"
+#include "spectrum/spectral_sampling.h"
 #include "spectrum/spectrum.h"
 
 namespace brume {
@@ -19,7 +20,8 @@ struct RenderSettings {
     RecordShape::Kind cacheKind = RecordShape::Kind::Adaptive;  // -acache adaptive|classic
     std::string cacheFile;           // -af: where the cache's records are kept between runs (changes no value)
     int ambientWeight = 0;           // -aw
-    Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce
+    Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce (RGB as given; the
+                                     // integrator lifts it to the sampling's bands)
     int maxReflections = -10;        // -lr: > 0 hard limit; ≤ 0 Russian roulette past |lr| reflections
     double minWeight = 1e-4;         // -lw: rays below this weight are played by Russian roulette
     double sourceSubdivision = 0.2;  // -ds: more shadow rays for sources larger than this, seen from a point
@@ -33,6 +35,7 @@ struct RenderSettings {
     MaterialSettings materials;      // -st, -bv
     bool randomSampling = true;      // -u: a new seed each run; -u- a fixed one
     uint64_t seed = 0;               // used when -u-
+    SpectralSampling sampling;       // -cs, -cw
     std::optional<double> time;      // -T: the scene's instant (s), for time-varying content (none yet: smoke, later)
 };
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <istream>
 #include <ostream>
 
@@ -26,14 +27,11 @@ constexpr int kMinEncodedLength = 17, kMaxEncodedLength = 0x7fff;
     throw Error(name + ": " + what);
 }
 
-// Radiance's RGBE decoding: the mantissa's middle value times 2^(e−136) (Ward, Graphics Gems II).
-void decode(const unsigned char* c, float* rgb) {
-    if (c[3] == 0) {
-        rgb[0] = rgb[1] = rgb[2] = 0;
-        return;
-    }
-    double f = std::ldexp(1.0, int(c[3]) - 136);
-    for (int i = 0; i < 3; ++i) rgb[i] = float((c[i] + 0.5) * f);
+// Radiance's common-exponent decoding of n mantissas and the exponent after them: each mantissa's middle
+// value times 2^(e−136) (Ward, Graphics Gems II).
+void decode(const unsigned char* c, float* values, int n = 3) {
+    double f = c[n] == 0 ? 0 : std::ldexp(1.0, int(c[n]) - 136);
+    for (int i = 0; i < n; ++i) values[i] = float((c[i] + 0.5) * f);
 }
 
 void encode(const float* rgb, unsigned char* c) {
@@ -100,30 +98,39 @@ Resolution readResolution(std::istream& in, const std::string& name) {
     return parseResolution(line, name);
 }
 
-void readHeader(std::istream& in, const std::string& name, Picture& p) {
-    std::string line;
+// Reads the header into p; returns its FORMAT= (RGBE without one, as Radiance assumes).
+std::string readHeader(std::istream& in, const std::string& name, Picture& p) {
+    std::string line, format = "32-bit_rle_rgbe";
     if (!std::getline(in, line) || line != "#?RADIANCE") bad(name, "not a Radiance picture");
     while (std::getline(in, line) && !line.empty()) {
         if (isHeaderVariable(line, "FORMAT=")) {
-            std::string f = line.substr(7);
-            while (!f.empty() && std::isspace((unsigned char)f.back())) f.pop_back();
-            if (f != "32-bit_rle_rgbe" && f != "32-bit_rle_xyze") bad(name, "unsupported picture format " + f);
-            p.xyz = f == "32-bit_rle_xyze";
+            format = line.substr(7);
+            while (!format.empty() && std::isspace((unsigned char)format.back())) format.pop_back();
             continue;
         }
         p.header.push_back(line);
     }
     p.exposure = headerProduct(p.header, "EXPOSURE=");
     p.pixelAspect = headerProduct(p.header, "PIXASPECT=");
-    if (!in) bad(name, "truncated header");  // without FORMAT=, RGBE, as Radiance assumes
+    if (!in) bad(name, "truncated header");
     if (!(p.pixelAspect > 0) || !(p.exposure > 0)) bad(name, "bad EXPOSURE= or PIXASPECT=");
+    return format;
+}
+
+// The value of header line `name` ("NCOMP=6"), or "" without one.
+std::string headerValue(const std::vector<std::string>& header, std::string_view name) {
+    for (const std::string& line : header)
+        if (isHeaderVariable(line, name)) return line.substr(name.size());
+    return "";
 }
 
 }  // namespace
 
 Picture readRadiancePicture(std::istream& in, const std::string& name) {
     Picture p;
-    readHeader(in, name, p);
+    std::string format = readHeader(in, name, p);
+    if (format != "32-bit_rle_rgbe" && format != "32-bit_rle_xyze") bad(name, "unsupported picture format " + format);
+    p.xyz = format == "32-bit_rle_xyze";
     Resolution o = readResolution(in, name);
     if (double(o.width) * o.height > kMaxPicturePixels) bad(name, "picture too large");
     // The scanlines first, in a buffer that grows as they arrive: a resolution line promising more than the
@@ -143,6 +150,35 @@ Picture readRadiancePicture(std::istream& in, const std::string& name) {
             decode(&raw[(size_t(s) * length + k) * 4], p.at(x, y));
         }
     return p;
+}
+
+HyperspectralPicture readHyperspectralPicture(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) bad(path, "cannot open hyperspectral picture");
+    HyperspectralPicture h;
+    Picture& p = h.picture;
+    if (readHeader(in, path, p) != "Radiance_spectra") bad(path, "not a hyperspectral picture (FORMAT=Radiance_spectra)");
+    h.bands = std::atoi(headerValue(p.header, "NCOMP=").c_str());
+    std::istringstream splits(headerValue(p.header, "WAVELENGTH_SPLITS="));
+    double split[4];
+    if (!(splits >> split[0] >> split[1] >> split[2] >> split[3]) || !(split[0] != split[3]))
+        bad(path, "missing or bad WAVELENGTH_SPLITS=");
+    h.first = split[0], h.last = split[3];
+    if (h.bands <= 3 || h.bands > 1024) bad(path, "bad NCOMP= (4 to 1024 bands)");
+    Resolution o = readResolution(in, path);
+    if (double(o.width) * o.height * h.bands > kMaxPicturePixels * 3) bad(path, "picture too large");
+    p.width = o.width, p.height = o.height;
+    size_t stride = size_t(h.bands) + 1;
+    std::vector<unsigned char> raw(size_t(o.width) * o.height * stride);  // flat: Radiance does not encode them
+    if (!in.read(reinterpret_cast<char*>(raw.data()), std::streamsize(raw.size()))) bad(path, "truncated pixels");
+    h.values.resize(size_t(o.width) * o.height * h.bands);
+    for (int s = 0; s < o.scanlines(); ++s)
+        for (int k = 0; k < o.scanlineLength(); ++k) {
+            auto [x, y] = o.pixel(s, k);
+            decode(&raw[(size_t(s) * o.scanlineLength() + k) * stride], &h.values[(size_t(y) * o.width + x) * h.bands],
+                   h.bands);
+        }
+    return h;
 }
 
 Picture readPicture(const std::string& path) {

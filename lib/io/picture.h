@@ -30,6 +30,18 @@ struct Picture {
 Picture readPicture(const std::string& path);
 Picture readRadiancePicture(std::istream& in, const std::string& name);
 
+// Radiance 6's hyperspectral pictures (FORMAT=Radiance_spectra, as rtrace -co -fc writes them): NCOMP
+// mantissa bytes and a shared exponent per pixel, not run-length encoded; the bands evenly split the range
+// from WAVELENGTH_SPLITS' first wavelength to its last (longest first, as Radiance writes them).
+struct HyperspectralPicture {
+    Picture picture;           // size, pixel aspect and header; no pixels
+    int bands = 0;
+    double first = 0, last = 0;  // nm: the outer edges of the first and the last band
+    std::vector<float> values;   // width × height × bands, rows from the top
+};
+// Throws Error naming the file on anything malformed or truncated.
+HyperspectralPicture readHyperspectralPicture(const std::string& path);
+
 // Writes `picture` as a run-length encoded Radiance picture: "#?RADIANCE", the header lines (without
 // PRIMARIES= when XYZE), FORMAT=, the blank line, "-Y height +X width" and the scanlines, laid out as
 // Radiance 6.1 lays them out. A later frame of a stream of frames (Radiance's rpict -S without -o) goes

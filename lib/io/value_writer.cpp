@@ -1,5 +1,6 @@
 #include "io/value_writer.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace brume {
@@ -11,23 +12,26 @@ const std::string kLetters = "odvVwWlLcpnNsmMrxRX~";
 double length(double d) { return std::isfinite(d) ? d : kMiss; }
 }  // namespace
 
-void encodeRgbe(float r, float g, float b, unsigned char out[4]) {
-    double d = std::max({r, g, b});
-    if (d <= 1e-32) {
-        out[0] = out[1] = out[2] = out[3] = 0;
+void encodeCommonExponent(const double* v, int n, unsigned char* out) {
+    double d = *std::max_element(v, v + n);
+    if (!(d > 1e-32)) {
+        std::fill_n(out, n + 1, 0);
         return;
     }
     int e;
-    double m = std::frexp(d, &e);
-    double f = m * 256.0 / d;
-    out[0] = r > 0 ? static_cast<unsigned char>(r * f) : 0;
-    out[1] = g > 0 ? static_cast<unsigned char>(g * f) : 0;
-    out[2] = b > 0 ? static_cast<unsigned char>(b * f) : 0;
-    out[3] = static_cast<unsigned char>(e + 128);
+    double f = std::frexp(d, &e) * 256.0 / d;
+    for (int i = 0; i < n; ++i) out[i] = v[i] > 0 ? static_cast<unsigned char>(v[i] * f) : 0;
+    out[n] = static_cast<unsigned char>(e + 128);
 }
 
-ValueWriter::ValueWriter(std::FILE* out, const std::string& spec, char format, const Scene& scene)
-    : out_(out), format_(format), scene_(scene) {
+void encodeRgbe(float r, float g, float b, unsigned char out[4]) {
+    double v[3] = {r, g, b};
+    encodeCommonExponent(v, 3, out);
+}
+
+ValueWriter::ValueWriter(std::FILE* out, const std::string& spec, char format, const Scene& scene,
+                         const ColorOutput& output)
+    : out_(out), format_(format), scene_(scene), output_(output) {
     if (spec.empty()) throw Error("empty output specification");
     std::string* into = &perRay_;
     for (size_t i = 0; i < spec.size(); ++i) {
@@ -41,13 +45,15 @@ ValueWriter::ValueWriter(std::FILE* out, const std::string& spec, char format, c
     }
     if (format_ == 'c' && (tracing() || (perRay_ != "v" && perRay_ != "r" && perRay_ != "x")))
         throw Error("color format only with -ov, -or, -ox");
+    if (format_ == 'c' && output_.components() < 3) throw Error("color format incompatible with -pY, -pS, -pM, -pA");
 }
 
 int ValueWriter::components() const {
     if (tracing()) return 0;
     int n = 0;
     for (char c : perRay_) {
-        if (std::string("odvVWpnNrx").find(c) != std::string::npos) n += 3;
+        if (std::string("vVWrx").find(c) != std::string::npos) n += output_.components();
+        else if (std::string("odpnN").find(c) != std::string::npos) n += 3;
         else if (std::string("wlLRX").find(c) != std::string::npos) n += 1;
         else if (c == 'c') n += 2;
     }
@@ -58,7 +64,9 @@ std::string ValueWriter::formatName() const {
     switch (format_) {
         case 'f': return "float";
         case 'd': return "double";
-        case 'c': return "32-bit_rle_rgbe";
+        case 'c':
+            if (output_.kind == ColorOutput::Kind::Spectral && output_.components() > 3) return "Radiance_spectra";
+            return output_.kind == ColorOutput::Kind::Xyz ? "32-bit_rle_xyze" : "32-bit_rle_rgbe";
         default: return "ascii";
     }
 }
@@ -79,15 +87,16 @@ void ValueWriter::reals(const double* v, int n) {
 void ValueWriter::real(double v) { reals(&v, 1); }
 
 void ValueWriter::color(const Spectrum& c) {
+    double v[Spectrum::kMaxChannels];
+    output_.convert(c, v);
+    int n = output_.components();
     if (format_ == 'c') {
-        unsigned char rgbe[4];
-        encodeRgbe(c[0], c[1], c[2], rgbe);
-        std::fwrite(rgbe, 1, 4, out_);
+        unsigned char bytes[Spectrum::kMaxChannels + 1];
+        encodeCommonExponent(v, n, bytes);
+        std::fwrite(bytes, 1, size_t(n) + 1, out_);
         return;
     }
-    // Radiance keeps colours in single precision; print exactly those values.
-    double v[3] = {double(c[0]), double(c[1]), double(c[2])};
-    reals(v, 3);
+    reals(v, n);
 }
 
 void ValueWriter::text(const std::string& s) { std::fprintf(out_, "%s\t", s.c_str()); }

@@ -1,11 +1,13 @@
 // rtrace's output stream: the header, and per ray the fields its -o letters ask for, in ASCII (each value
-// "%e\t", a newline per ray), native floats or doubles, or 4-byte RGBE (-fc), byte for byte as Radiance.
+// "%e\t", a newline per ray), native floats or doubles, or Radiance's common-exponent bytes (-fc: RGBE, XYZE,
+// or N mantissas and an exponent for spectra), byte for byte as Radiance. Colours as `output` says.
 #pragma once
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "integrator/integrator.h"
+#include "spectrum/color_output.h"
 
 namespace brume {
 
@@ -17,7 +19,8 @@ struct OutputRay {
 class ValueWriter {
 public:
     // Throws Error for an unknown letter or a format that cannot carry the fields (-fc).
-    ValueWriter(std::FILE* out, const std::string& spec, char format, const Scene& scene);
+    ValueWriter(std::FILE* out, const std::string& spec, char format, const Scene& scene,
+                const ColorOutput& output = {});
     // Number of values per ray (the header's NCOMP); 0 in trace mode, as Radiance.
     int components() const;
     // "FORMAT=..." value for the header.
@@ -43,9 +46,12 @@ private:
     bool shadowRays_ = false;
     char format_;
     const Scene& scene_;
+    ColorOutput output_;
 };
 
 // Radiance's RGBE: a shared exponent byte and three 8-bit mantissas (Ward, Graphics Gems II).
 void encodeRgbe(float r, float g, float b, unsigned char out[4]);
+// The same for n values (Radiance's spectral SCOLR): n mantissas, then the exponent byte.
+void encodeCommonExponent(const double* v, int n, unsigned char* out);
 
 }  // namespace brume

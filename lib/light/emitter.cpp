@@ -1,4 +1,5 @@
 #include "light/emitter.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 #include <numbers>
 
@@ -13,7 +14,7 @@ Emitter makeEmitter(const Scene& scene, int index) {
     else if (o.type == "illum") e.kind = Emitter::Kind::Illum, maxStrings = 1;
     if (o.strings.size() > maxStrings || !o.integers.empty() || o.reals.size() != reals)
         throw Error(o.where, "bad arguments for " + o.type + " \"" + o.name + "\"");
-    e.radiance = Spectrum(float(o.reals[0]), float(o.reals[1]), float(o.reals[2]));
+    e.radiance = spectrumFromRgb(o.reals[0], o.reals[1], o.reals[2]);
     if (e.kind == Emitter::Kind::Glow) e.glowRadius = o.reals[3];
     if (e.kind == Emitter::Kind::Spotlight) {
         double angle = o.reals[3] * std::numbers::pi / 180;

@@ -2,6 +2,7 @@
 
 #include "sampling/warp.h"
 #include "util/error.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
@@ -17,7 +18,7 @@ AnisotropicMaterial::AnisotropicMaterial(const SceneObject& o, const MaterialSet
         badArguments(o, "expected " + std::to_string(want) + " real arguments, got " + std::to_string(o.reals.size()));
     if (o.reals[4] <= kTiny || o.reals[5] <= kTiny) badArguments(o, "roughness too small");
     orientation_ = functionObject(o, functions, 3, 0, 3);
-    color_ = Spectrum(float(o.reals[0]), float(o.reals[1]), float(o.reals[2]));
+    color_ = spectrumFromRgb(o.reals[0], o.reals[1], o.reals[2]);
     spec_ = o.reals[3];
     au2_ = o.reals[4] * o.reals[4];
     av2_ = o.reals[5] * o.reals[5];

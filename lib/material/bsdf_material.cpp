@@ -7,6 +7,7 @@
 #include "pattern/pattern_library.h"
 #include "scene/raypath.h"
 #include "util/error.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
@@ -18,7 +19,7 @@ constexpr double kTiny = 1e-6;  // Radiance's FTINY
     throw Error(o.where, "bad arguments for BSDF \"" + o.name + "\": " + why);
 }
 
-Spectrum spectrum(const Rgb& c) { return Spectrum(c[0], c[1], c[2]); }
+Spectrum spectrum(const Rgb& c) { return spectrumFromRgb(c[0], c[1], c[2]); }
 Rgb operator+(const Rgb& a, const Rgb& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 // thick, ux, uy, uz: .cal expressions in the function file's context. Brume evaluates them once, so they

@@ -1,6 +1,7 @@
 #include "material/function_brdf.h"
 
 #include "util/error.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
@@ -32,7 +33,7 @@ FunctionBrdfMaterial::FunctionBrdfMaterial(const SceneObject& o, const MaterialS
         for (size_t i = 0; i < dims; ++i) coordinates_.push_back(functions.function(o.strings[3 + i], 4, f_.scope, o.where));
     }
     brdf_ = functions.function(o.strings[0], data ? 5 : 4, f_.scope, o.where);
-    color_ = Spectrum(float(o.reals[0]), float(o.reals[1]), float(o.reals[2]));
+    color_ = spectrumFromRgb(o.reals[0], o.reals[1], o.reals[2]);
     rspec_ = o.reals[3];
     if (transmits_) {
         trans_ = o.reals[4] * (1 - rspec_);

@@ -1,6 +1,7 @@
 // plastic, metal and trans: Radiance's "normal" materials (reference manual §"Plastic", "Metal",
 // "Trans"; the split of reflectances follows Radiance's normal.c semantics).
 #include "material/normal.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
@@ -14,7 +15,7 @@ NormalMaterial::NormalMaterial(const SceneObject& o, const MaterialSettings& set
     if (!o.strings.empty() || !o.integers.empty() || o.reals.size() != want)
         throw Error(o.where, "bad arguments for " + o.type + " \"" + o.name + "\": expected 0 strings, 0 integers, " +
                                  std::to_string(want) + " reals");
-    color_ = Spectrum(float(o.reals[0]), float(o.reals[1]), float(o.reals[2]));
+    color_ = spectrumFromRgb(o.reals[0], o.reals[1], o.reals[2]);
     spec_ = o.reals[3];
     alpha2_ = o.reals[4] * o.reals[4];
     if (kind_ == Kind::Trans) trans_ = o.reals[5], transSpec_ = o.reals[6];

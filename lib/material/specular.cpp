@@ -1,4 +1,5 @@
 #include "material/specular.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -12,7 +13,7 @@ void expectReals(const SceneObject& o, size_t lo, size_t hi, size_t maxStrings =
         throw Error(o.where, "bad arguments for " + o.type + " \"" + o.name + "\"");
 }
 
-Spectrum rgb(const SceneObject& o) { return Spectrum(float(o.reals[0]), float(o.reals[1]), float(o.reals[2])); }
+Spectrum rgb(const SceneObject& o) { return spectrumFromRgb(o.reals[0], o.reals[1], o.reals[2]); }
 
 // Unpolarised Fresnel reflectance for cosines c1 (outside) and c2 (inside) and relative index n,
 // as the mean of the s and p terms.

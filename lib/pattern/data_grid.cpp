@@ -120,16 +120,37 @@ DataGrid DataGrid::read(std::istream& in, const std::string& name) {
     return DataGrid(std::move(axes), 1, std::move(values));
 }
 
-DataGrid DataGrid::fromPicture(const Picture& p) {
+namespace {
+
+// Radiance's colorpict coordinates of a picture's rows (v) and columns (u): the smaller side spans 1, pixel
+// aspect included.
+std::vector<DataGrid::Axis> pictureAxes(const Picture& p) {
     if (p.width < 2 || p.height < 2) throw Error("picture too small for a pattern (needs 2 × 2 pixels)");
-    // Radiance's colorpict coordinates: the smaller side spans 1, pixel aspect included.
     double v = 1, u = 1;
     if (p.width <= p.height * p.pixelAspect) v = p.pixelAspect * p.height / p.width;
     else u = double(p.width) / p.height / p.pixelAspect;
-    std::vector<float> values(p.pixels.size());
-    for (int row = 0; row < p.height; ++row)  // first node row is the bottom of the picture
-        std::copy_n(p.at(0, p.height - 1 - row), size_t(p.width) * 3, &values[size_t(row) * p.width * 3]);
-    return DataGrid({Axis{0, v, p.height, {}}, Axis{0, u, p.width, {}}}, 3, std::move(values));
+    return {DataGrid::Axis{0, v, p.height, {}}, DataGrid::Axis{0, u, p.width, {}}};
+}
+
+// Pixel rows from the top, `n` values per pixel, with the first node row at the bottom of the picture.
+std::vector<float> bottomUp(const float* rows, int width, int height, size_t n) {
+    std::vector<float> values(size_t(width) * height * n);
+    size_t row = size_t(width) * n;
+    for (int y = 0; y < height; ++y) std::copy_n(rows + size_t(height - 1 - y) * row, row, &values[size_t(y) * row]);
+    return values;
+}
+
+}  // namespace
+
+DataGrid DataGrid::fromPicture(const Picture& p) {
+    return DataGrid(pictureAxes(p), 3, bottomUp(p.pixels.data(), p.width, p.height, 3));
+}
+
+DataGrid DataGrid::fromHyperspectralPicture(const HyperspectralPicture& h) {
+    std::vector<Axis> axes = pictureAxes(h.picture);
+    double half = 0.5 * (h.last - h.first) / h.bands;
+    axes.push_back(Axis{h.first + half, h.last - half, h.bands, {}});
+    return DataGrid(std::move(axes), 1, bottomUp(h.values.data(), h.picture.width, h.picture.height, size_t(h.bands)));
 }
 
 namespace {

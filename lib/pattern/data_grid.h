@@ -31,6 +31,9 @@ public:
     // A picture as colorpict sees it: two dimensions, v (rows, from the bottom) then u (columns), the
     // smaller one spanning 0…1 and the other its aspect ratio; three channels.
     static DataGrid fromPicture(const Picture& picture);
+    // A hyperspectral picture as specpict sees it: v and u as for a picture, then wavelength (the bands'
+    // centres, longest first); one channel.
+    static DataGrid fromHyperspectralPicture(const HyperspectralPicture& picture);
 
     int dimensions() const { return int(axes_.size()); }
     int channels() const { return channels_; }

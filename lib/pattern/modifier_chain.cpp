@@ -6,6 +6,7 @@
 #include "light/emitter.h"
 #include "material/material.h"
 #include "pattern/pattern_types.h"
+#include "pattern/spectral_pattern.h"
 #include "util/error.h"
 
 namespace brume {
@@ -13,7 +14,7 @@ namespace brume {
 bool isPatternType(const std::string& t) {
     static const std::set<std::string> kTypes{"brightfunc", "colorfunc", "brightdata", "colordata", "colorpict",
                                               "brighttext", "colortext", "texfunc",    "texdata"};
-    return kTypes.count(t) > 0;
+    return kTypes.count(t) > 0 || isSpectralPatternType(t);
 }
 
 bool isMixtureType(const std::string& t) { return t == "mixfunc" || t == "mixdata" || t == "mixpict" || t == "mixtext"; }

@@ -34,11 +34,22 @@ const DataGrid& PatternLibrary::dataFile(const std::string& name) {
 }
 
 const DataGrid& PatternLibrary::picture(const std::string& name) {
-    auto& grid = grids_["picture:" + name];
+    return pictureGrid("picture", name, [](const std::string& path) { return DataGrid::fromPicture(readPicture(path)); });
+}
+
+const DataGrid& PatternLibrary::hyperspectralPicture(const std::string& name) {
+    return pictureGrid("hyperspectral picture", name, [](const std::string& path) {
+        return DataGrid::fromHyperspectralPicture(readHyperspectralPicture(path));
+    });
+}
+
+const DataGrid& PatternLibrary::pictureGrid(const std::string& kind, const std::string& name,
+                                            const std::function<DataGrid(const std::string&)>& read) {
+    auto& grid = grids_[kind + ":" + name];
     if (!grid) {
         std::string path = findOnRayPath(name);
-        if (path.empty()) throw Error("cannot find picture file \"" + name + "\"");
-        grid = std::make_unique<DataGrid>(DataGrid::fromPicture(readPicture(path)));
+        if (path.empty()) throw Error("cannot find " + kind + " file \"" + name + "\"");
+        grid = std::make_unique<DataGrid>(read(path));
     }
     return *grid;
 }

@@ -1,6 +1,7 @@
 // What the scene's patterns share: the .cal definitions they use, compiled once into one program that
 // every thread evaluates, and the data files, pictures and fonts they read, each read once.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,6 +26,7 @@ public:
     int parameters(const std::string& name, const cal::Scope& scope) const;
     const DataGrid& dataFile(const std::string& name);
     const DataGrid& picture(const std::string& name);
+    const DataGrid& hyperspectralPicture(const std::string& name);
     const Font& font(const std::string& name, const SourceLocation& where);
 
     // Compiles what was asked for; program() is valid from then on.
@@ -32,6 +34,10 @@ public:
     const cal::Program& program() const { return program_; }
 
 private:
+    // The grid `read` makes of picture file `name` (found along RAYPATH), read once; `kind` for messages.
+    const DataGrid& pictureGrid(const std::string& kind, const std::string& name,
+                                const std::function<DataGrid(const std::string&)>& read);
+
     cal::Library library_;
     std::unique_ptr<cal::Compiler> compiler_;
     cal::Program program_;

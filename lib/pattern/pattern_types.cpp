@@ -6,14 +6,14 @@
 #include <algorithm>
 
 #include "pattern/function_object.h"
+#include "pattern/spectral_pattern.h"
 #include "pattern/text_pattern.h"
 #include "util/error.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
 namespace {
-
-Spectrum rgb(double r, double g, double b) { return Spectrum(float(r), float(g), float(b)); }
 
 // brightfunc (one value) and colorfunc (three).
 class FunctionColor : public Pattern {
@@ -23,7 +23,7 @@ public:
     void apply(const PatternHit& hit, PatternEvaluator& e, Texturing& t) const override {
         cal::Evaluator& eval = f_.begin(hit, e);
         if (f_.exprs.size() == 1) t.color *= float(eval(f_.exprs[0]));
-        else t.color *= rgb(eval(f_.exprs[0]), eval(f_.exprs[1]), eval(f_.exprs[2]));
+        else t.color *= spectrumFromRgb(eval(f_.exprs[0]), eval(f_.exprs[1]), eval(f_.exprs[2]));
     }
 
 private:
@@ -101,7 +101,7 @@ public:
             t.perturbation += lookup_.object().frame.toWorldVector(d, hit);
         } else {
             t.color *= count == 1 ? Spectrum(float(lookup_.call(e, 0, v)))
-                                  : rgb(lookup_.call(e, 0, v), lookup_.call(e, 1, v), lookup_.call(e, 2, v));
+                                  : spectrumFromRgb(lookup_.call(e, 0, v), lookup_.call(e, 1, v), lookup_.call(e, 2, v));
         }
     }
 
@@ -201,6 +201,7 @@ std::unique_ptr<Pattern> makePattern(const Scene& scene, int object, PatternLibr
     if (o.type == "texdata") return std::make_unique<DataPattern>(dataLookup(o, lib, 3, 3, true), true);
     if (o.type == "colorpict") return std::make_unique<DataPattern>(pictureLookup(o, lib, 3), false);
     if (o.type == "brighttext" || o.type == "colortext") return makeTextPattern(o, lib);
+    if (isSpectralPatternType(o.type)) return makeSpectralPattern(o, lib);
     throw Error(o.where, "type '" + o.type + "' (" + o.name + ") is not supported by Brume yet");
 }
 

@@ -7,6 +7,7 @@
 #include "pattern/text_layout.h"
 #include "scene/raypath.h"
 #include "util/error.h"
+#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
@@ -114,15 +115,13 @@ public:
     TextPattern(const SceneObject& o, PatternLibrary& lib) : text_(o, lib) {
         const std::vector<double>& v = o.reals;
         if (o.type == "brighttext") foreground_ = Spectrum(float(v[9])), background_ = Spectrum(float(v[10]));
-        else foreground_ = rgb(v[9], v[10], v[11]), background_ = rgb(v[12], v[13], v[14]);
+        else foreground_ = spectrumFromRgb(v[9], v[10], v[11]), background_ = spectrumFromRgb(v[12], v[13], v[14]);
     }
     void apply(const PatternHit& hit, PatternEvaluator&, Texturing& t) const override {
         t.color *= text_.covers(hit) ? foreground_ : background_;
     }
 
 private:
-    static Spectrum rgb(double r, double g, double b) { return Spectrum(float(r), float(g), float(b)); }
-
     PlacedText text_;
     Spectrum foreground_, background_;
 };

@@ -10,6 +10,8 @@
 #include <ostream>
 
 #include "io/openexr_picture.h"
+#include "io/spectral_picture.h"
+#include "spectrum/colorimetry.h"
 #include "util/error.h"
 #include "util/pending_file.h"
 
@@ -74,12 +76,22 @@ bool claimFile(const std::string& path) {
     return true;
 }
 
-void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat) {
+void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat, const PixelSpectra* spectra) {
     if (endsWith(path, ".exr")) {
         if (!exrFloat && std::any_of(picture.pixels.begin(), picture.pixels.end(), [](float v) { return v > kLargestHalf; }))
             warn(path + ": values above " + std::to_string(int(kLargestHalf)) + " (a light source, the sun) clamped in half floats; -ef f keeps them");
-        writeOpenExrPicture(path, picture, exrFloat ? ExrPixels::float32 : ExrPixels::half);
-        return;
+        ExrPixels pixels = exrFloat ? ExrPixels::float32 : ExrPixels::half;
+        if (!spectra) return writeOpenExrPicture(path, picture, pixels);
+        // The layout's bands hold spectral radiance, W·m⁻²·sr⁻¹·nm⁻¹: some 400 times below Radiance's values,
+        // too small for half floats to keep dim pixels to 3 digits, hence floats.
+        pixels = ExrPixels::float32;
+        SpectralPixels bands;
+        const SpectralSampling& s = spectralSampling();
+        for (int i = 0; i < s.channels; ++i) bands.wavelengths.push_back(s.bandCentre(i));
+        float scale = float(spectralRadiancePerValue());
+        bands.values.reserve(spectra->values.size());
+        for (float v : spectra->values) bands.values.push_back(v * scale);
+        return writeSpectralOpenExrPicture(path, picture, bands, pixels);
     }
     writeWhole(path, [&picture](std::ostream& out) { writeRadiancePicture(out, picture); });
 }

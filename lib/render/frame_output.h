@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/picture.h"
+#include "render/picture_renderer.h"
 
 namespace brume {
 
@@ -22,8 +23,10 @@ bool namesFrames(const std::string& pattern);
 bool claimFile(const std::string& path);
 
 // Writes `picture` to `path` (claimed or not) through a temporary file renamed into place: Radiance's
-// format, or OpenEXR (half or float pixels) when the name ends in .exr.
-void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat);
+// format, or OpenEXR (half or float pixels) when the name ends in .exr — with `spectra`, a spectral OpenEXR
+// (spectral_picture.h) whose bands hold spectral radiance in W·m⁻²·sr⁻¹·nm⁻¹.
+void writePictureFile(const std::string& path, const Picture& picture, bool exrFloat,
+                      const PixelSpectra* spectra = nullptr);
 
 // Writes a depth buffer (-z): one 32-bit float per pixel, top row first, as Radiance's pinterp reads; whole
 // or not at all.

@@ -22,8 +22,8 @@ std::vector<int> gridLines(int n, int spacing) {
 
 // Radiance's test for samples too different to interpolate between: any channel differing by more than
 // `threshold` times the smaller value.
-bool differ(const float* a, const float* b, double threshold) {
-    for (int i = 0; i < 3; ++i)
+bool differ(const float* a, const float* b, int channels, double threshold) {
+    for (int i = 0; i < channels; ++i)
         if (a[i] - b[i] > threshold * b[i] || b[i] - a[i] > threshold * a[i]) return true;
     return false;
 }
@@ -32,9 +32,8 @@ class Renderer {
 public:
     Renderer(const Integrator& integrator, const View& view, const PictureSettings& s, ProgressMeter* progress)
         : integrator_(integrator), view_(view), s_(s), progress_(progress), w_(s.xres), h_(s.yres) {
-        out_.picture.width = w_, out_.picture.height = h_;
-        out_.picture.pixelAspect = s.pixelAspect;
-        out_.picture.pixels.assign(size_t(w_) * h_ * 3, 0.f);
+        values_.width = w_, values_.height = h_, values_.channels = c_;
+        values_.values.assign(size_t(w_) * h_ * c_, 0.f);
         depth_.assign(size_t(w_) * h_, 0.f);
         traced_.assign(size_t(w_) * h_, 0);
     }
@@ -47,15 +46,34 @@ public:
         if (adapt) adaptive();
         else traceAll();
         if (s_.drawSources && !s_.irradiance)
-            drawSmallSources(integrator_, view_, std::max(1, s_.sampleSpacing), out_.picture, s_.depth ? &depth_ : nullptr);
+            drawSmallSources(integrator_, view_, std::max(1, s_.sampleSpacing), values_, s_.depth ? &depth_ : nullptr);
         if (progress_) progress_->finish();
-        if (s_.depth) out_.depth = std::move(depth_);
-        return std::move(out_);
+        RenderedPicture out;
+        out.picture = picture();
+        if (s_.depth) out.depth = std::move(depth_);
+        if (c_ > 3) out.spectra = std::move(values_);
+        return out;
     }
 
 private:
     size_t at(int x, int row) const { return size_t(row) * w_ + x; }
-    float* pixel(int x, int row) { return out_.picture.at(x, row); }
+    float* pixel(int x, int row) { return values_.at(x, row); }
+
+    // The three channels -pRGB, -pXYZ or -pc ask for (Radiance's rpict writes XYZ × 179, as rtrace does).
+    Picture picture() const {
+        Picture p;
+        p.width = w_, p.height = h_, p.pixelAspect = s_.pixelAspect;
+        p.xyz = s_.color.kind == ColorOutput::Kind::Xyz;
+        p.pixels.resize(size_t(w_) * h_ * 3);
+        Spectrum v(0.f, c_);
+        double rgb[3];
+        for (size_t i = 0; i < size_t(w_) * h_; ++i) {
+            std::copy_n(&values_.values[i * c_], c_, &v[0]);
+            s_.color.convert(v, rgb);
+            for (int k = 0; k < 3; ++k) p.pixels[3 * i + k] = float(rgb[k]);
+        }
+        return p;
+    }
 
     // One ray through pixel (x, row): its value and distance stored, the pixel marked traced.
     void trace(int x, int row) {
@@ -73,7 +91,7 @@ private:
         RayRecord rec = s_.irradiance
                             ? integrator_.irradianceAtHit(ray->org, ray->dir, index)
                             : integrator_.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);
-        for (int c = 0; c < 3; ++c) pixel(x, row)[c] = rec.value[c];
+        for (int c = 0; c < c_; ++c) pixel(x, row)[c] = rec.value[c];
         // Radiance's ray distance: the mirror image's when the mirrored light dominates, else the effective one.
         bool mirrored = brightness(rec.mirrored) > 0.5f * brightness(rec.value);
         double d = mirrored ? rec.mirroredLength : rec.effectiveLength;
@@ -112,7 +130,7 @@ private:
                                      pixel(xs[i + 1], ys[j + 1])};
                 bool b = false;
                 for (int p = 0; p < 4 && !b; ++p)
-                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], s_.sampleThreshold);
+                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], c_, s_.sampleThreshold);
                 busy[j * (xs.size() - 1) + i] = b;
             }
         // Tile (i, j) spans columns xs[i]..xs[i+1] and rows ys[j]..ys[j+1], edges included: a pixel on an
@@ -153,8 +171,8 @@ private:
         float* p = pixel(x, row);
         float d = 0;
         for (int k = 0; k < 4; ++k) {
-            const float* c = &out_.picture.pixels[3 * corner[k]];
-            for (int ch = 0; ch < 3; ++ch) p[ch] += float(wt[k]) * c[ch];
+            const float* c = &values_.values[c_ * corner[k]];
+            for (int ch = 0; ch < c_; ++ch) p[ch] += float(wt[k]) * c[ch];
             d += float(wt[k]) * depth_[corner[k]];
         }
         depth_[at(x, row)] = d;
@@ -165,8 +183,8 @@ private:
     const PictureSettings& s_;
     ProgressMeter* progress_;
     static constexpr int kBand = 32;  // rows traced together
-    int w_, h_;
-    RenderedPicture out_;
+    int w_, h_, c_ = Spectrum::defaultChannels();
+    PixelSpectra values_;
     std::vector<float> depth_;
     std::vector<char> traced_;
     std::vector<int> xs_, ys_;  // the first pass's columns and rows

@@ -8,6 +8,7 @@
 
 #include "integrator/integrator.h"
 #include "io/picture.h"
+#include "spectrum/color_output.h"
 #include "view/view.h"
 
 namespace brume {
@@ -24,11 +25,22 @@ struct PictureSettings {
     bool irradiance = false;        // -i: irradiance at the surfaces seen, not their radiance
     bool drawSources = true;        // draw sources narrower than -ps pixels (Radiance's rule: with -dv+ and no -pd)
     bool depth = false;             // keep each pixel's distance (-z)
+    ColorOutput color;              // -pRGB, -pXYZ, -pc: what the picture's three channels hold
+};
+
+// Values of light per pixel in the channels of the sampling in effect (RGB, or bands), rows from the top.
+struct PixelSpectra {
+    int width = 0, height = 0, channels = 3;
+    std::vector<float> values;
+
+    float* at(int x, int y) { return &values[size_t(channels) * (size_t(y) * width + x)]; }
+    const float* at(int x, int y) const { return &values[size_t(channels) * (size_t(y) * width + x)]; }
 };
 
 struct RenderedPicture {
-    Picture picture;           // resolution after fitting, pixel aspect, pixels (no header)
+    Picture picture;           // resolution after fitting, pixel aspect, pixels as `color` asks (no header)
     std::vector<float> depth;  // distance to what each pixel sees (top row first), when asked
+    PixelSpectra spectra;      // each pixel's bands, when the sampling has more than 3
 };
 
 // The resolution and pixel aspect `settings` give for `view` (Radiance's normaspect).

@@ -95,7 +95,7 @@ Outline pixelOutline(const Light& light, const View& view, int w, int h) {
 }
 
 void drawSource(const Integrator& integrator, const Light& light, const View& view, const Outline& outline,
-                Picture& picture, std::vector<float>* depth) {
+                PixelSpectra& picture, std::vector<float>* depth) {
     int w = picture.width, h = picture.height;
     double x0 = w, x1 = 0, y0 = h, y1 = 0;
     for (const Point& p : outline) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
@@ -118,8 +118,9 @@ void drawSource(const Integrator& integrator, const Light& light, const View& vi
             // Radiance's rule: a pixel whose own ray found the source already holds its radiance, scaled to the part
             // covered; otherwise the source's share replaces that much of the pixel.
             bool sameAsSource = true;
-            for (int c = 0; c < 3; ++c) sameAsSource &= std::abs(pixel[c] - rec.value[c]) <= 0.07f * std::min(pixel[c], rec.value[c]);
-            for (int c = 0; c < 3; ++c)
+            int n = picture.channels;
+            for (int c = 0; c < n; ++c) sameAsSource &= std::abs(pixel[c] - rec.value[c]) <= 0.07f * std::min(pixel[c], rec.value[c]);
+            for (int c = 0; c < n; ++c)
                 pixel[c] = sameAsSource && !nearer ? float(covered) * pixel[c]
                                                    : float(1 - covered) * pixel[c] + float(covered) * rec.value[c];
         }
@@ -127,7 +128,7 @@ void drawSource(const Integrator& integrator, const Light& light, const View& vi
 
 }  // namespace
 
-void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, Picture& picture,
+void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, PixelSpectra& picture,
                       std::vector<float>* depth) {
     for (const Light& light : integrator.scene().lights()) {
         if (light.emitter().kind == Emitter::Kind::Illum) continue;

@@ -6,15 +6,14 @@
 #include <vector>
 
 #include "integrator/integrator.h"
-#include "io/picture.h"
+#include "render/picture_renderer.h"
 #include "view/view.h"
 
 namespace brume {
 
-// Draws the sources of the integrator's scene narrower than `widthLimit` pixels into `picture` (its pixels
-// rows from the top), and their distance into `depth` where nearer, if given. A source is drawn where a ray through the
+// Draws the sources of the integrator's scene narrower than `widthLimit` pixels into `picture`, and their distance into `depth` where nearer, if given. A source is drawn where a ray through the
 // middle of its part of a pixel reaches it unobstructed. Illum sources (windows) are not drawn.
-void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, Picture& picture,
+void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, PixelSpectra& picture,
                       std::vector<float>* depth);
 
 }  // namespace brume

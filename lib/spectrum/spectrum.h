@@ -13,12 +13,18 @@ class Spectrum {
 public:
     static constexpr int kMaxChannels = 96;
 
-    // The channel count every Spectrum made without an explicit count gets (3 until -cs changes it).
+    // The channel count every Spectrum made without an explicit count gets (3 until -cs changes it), and
+    // for spectra of more than 3 bands their weights in brightness() (photopic, summing to 1;
+    // spectral_sampling.h sets both).
     static int defaultChannels() { return sChannels; }
-    static void setDefaultChannels(int n) {
+    static void setDefaultChannels(int n, const float* brightnessWeights = nullptr) {
         assert(n > 0 && n <= kMaxChannels);
         sChannels = n;
+        sWeighted = brightnessWeights != nullptr;
+        if (sWeighted) std::copy_n(brightnessWeights, n, sWeights);
     }
+    // The brightness weights of n bands, or nullptr when there are none (the bands are then equal).
+    static const float* brightnessWeights(int n) { return sWeighted && n == sChannels ? sWeights : nullptr; }
 
     Spectrum() : Spectrum(0.f) {}
     explicit Spectrum(float v, int n = sChannels) : n_(n) { std::fill_n(v_, n_, v); }
@@ -90,17 +96,24 @@ private:
         return *this;
     }
     inline static int sChannels = 3;
+    inline static bool sWeighted = false;
+    inline static float sWeights[kMaxChannels] = {};
     int n_;
     float v_[kMaxChannels];
 };
 
 // Radiance's luminance weights of its RGB primaries (the "bright" of color.h): Y = .265 R + .670 G + .065 B;
-// the mean of the channels beyond RGB. For any n channels v[0 … n-1] (a spectrum, or values stored apart).
+// for spectral bands their photopic weights (the mean without any). For any n channels v[0 … n-1] (a
+// spectrum, or values stored apart). A grey of value g has brightness g either way.
 template <class Channels>
 auto brightnessOf(const Channels& v, int n) {
     using T = std::decay_t<decltype(v[0])>;
     if (n == 3) return T(0.265) * v[0] + T(0.670) * v[1] + T(0.065) * v[2];
     T sum = 0;
+    if (const float* w = Spectrum::brightnessWeights(n)) {
+        for (int i = 0; i < n; ++i) sum += T(w[i]) * v[i];
+        return sum;
+    }
     for (int i = 0; i < n; ++i) sum += v[i];
     return sum / T(n);
 }

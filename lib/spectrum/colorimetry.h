@@ -1,0 +1,69 @@
+// Spectra as observers see them: CIE 1931 XYZ, RGB of given primaries, photopic, scotopic and melanopic
+// values. Radiance's normalisation throughout: every sensitivity curve has unit area, so that a flat
+// spectrum of 1 gives X = Y = Z = 1, RGB (1, 1, 1) in Radiance's equal-energy-white primaries, and 1 for
+// each curve; output options multiply by Radiance's efficacies (179 lm/W photopic, 412 scotopic, 179
+// melanopic). With 3 channels (RGB) XYZ comes from the primaries, and scotopic and melanopic values treat
+// R, G, B as flat over Radiance's partitions of the range (its WAVELENGTH_SPLITS), as Radiance does.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "spectrum/spectral_sampling.h"
+#include "spectrum/spectrum.h"
+
+namespace brume {
+
+using Color3 = std::array<double, 3>;
+using Matrix3 = std::array<Color3, 3>;  // rows
+
+struct Chromaticity {
+    double x, y;
+    bool operator==(const Chromaticity&) const = default;
+};
+struct Primaries {
+    Chromaticity red, green, blue, white;
+    bool operator==(const Primaries&) const = default;
+};
+// Radiance's standard primaries (color.h: nominal CRT primaries, equal-energy white).
+inline constexpr Primaries kRadiancePrimaries{{0.640, 0.330}, {0.290, 0.600}, {0.150, 0.060}, {1. / 3, 1. / 3}};
+// Whether p can be used (Radiance's colorprimsOK): chromaticities inside the unit triangle, a white not
+// on a line between primaries, a non-singular matrix.
+bool validPrimaries(const Primaries& p);
+
+Color3 operator*(const Matrix3& m, const Color3& c);
+Matrix3 operator*(const Matrix3& a, const Matrix3& b);
+double determinant(const Matrix3& m);
+Matrix3 inverse(const Matrix3& m);
+// RGB of primaries p to XYZ, white (1,1,1) ↦ p.white with Y = 1.
+Matrix3 rgbToXyz(const Primaries& p);
+// XYZ to RGB of primaries p, adapting from equal-energy white to p's white by von Kries in the "sharp"
+// sensor space (Süsstrunk, Holm, Finlayson 2001), as Radiance's compxyz2rgbWBmat does.
+Matrix3 xyzToRgb(const Primaries& p);
+
+// Per band, the share of each observer curve's area that falls in it, for the sampling in effect (rebuilt
+// when the sampling changes; not to be called while another thread changes it).
+struct ObserverWeights {
+    SpectralSampling sampling;
+    std::vector<double> x, y, z, scotopic, melanopic;
+    // Melanopic to melanopic-equivalent daylight (D65) value: ∫ȳ D65 / ∫s_mel D65, the curves normalised.
+    double melanopicToDaylight = 1;
+};
+const ObserverWeights& observerWeights();
+
+Color3 toXyz(const Spectrum& s);
+// RGB in primaries p; out-of-gamut negatives desaturated toward the grey of equal Y (Radiance's clipgamut
+// at the lower bound). Radiance's own primaries with 3 channels: the channels as they are.
+Color3 toRgb(const Spectrum& s, const Primaries& p = kRadiancePrimaries);
+// The same from XYZ.
+Color3 xyzToClippedRgb(const Color3& xyz, const Primaries& p = kRadiancePrimaries);
+double photopic(const Spectrum& s);   // Y (3 channels: Radiance's bright())
+double scotopic(const Spectrum& s);   // V'(λ)
+double melanopic(const Spectrum& s);  // s_mel(λ) of CIE S 026, normalised to unit area (Radiance's -pM)
+// CIE S 026's melanopic equivalent daylight (D65) value: equal to photopic() for a D65 spectrum.
+double melanopicDaylight(const Spectrum& s);
+
+// Spectral radiance (W·m⁻²·sr⁻¹·nm⁻¹) per unit of a band's value: a flat spectrum of 1 has Radiance's white
+// luminance, 179 cd/m² = 683 lm/W · ∫ L_λ ȳ dλ, so L_λ = 179 / (683 ∫ȳ dλ) ≈ 1/408.
+double spectralRadiancePerValue();
+
+}  // namespace brume
