@@ -4,11 +4,12 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <optional>
+#include <sstream>
 
 #include "scene/raypath.h"
+#include "spectrum/embedded_spectra.h"
 #include "util/error.h"
 
 namespace brume {
@@ -93,11 +94,9 @@ DataGrid::Axis readAxis(NumberReader& r) {
 }  // namespace
 
 DataGrid DataGrid::readDataFile(const std::string& name) {
-    std::string path = findOnRayPath(name);
-    if (path.empty()) throw Error("cannot find data file \"" + name + "\"");
-    std::ifstream in(path);
-    if (!in) throw Error("cannot open data file \"" + path + "\"");
-    return read(in, path);
+    FileText file = readLibraryFile(name, embeddedSpectrumFiles(), "data file");
+    std::istringstream in(file.text);
+    return read(in, file.origin);
 }
 
 DataGrid DataGrid::read(std::istream& in, const std::string& name) {

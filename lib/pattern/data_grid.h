@@ -24,7 +24,8 @@ public:
 
     DataGrid(std::vector<Axis> axes, int channels, std::vector<float> values);
 
-    // A Radiance data file, found along RAYPATH. Throws Error (file:line) when it is malformed.
+    // A Radiance data file, found along RAYPATH or else among Brume's shipped spectra (cie_d65.dat …,
+    // spectrum/embedded_spectra.h). Throws Error (file:line) when it is malformed.
     static DataGrid readDataFile(const std::string& name);
     // The same from a stream; `name` for messages.
     static DataGrid read(std::istream& in, const std::string& name);
