@@ -2,7 +2,7 @@
 """Cost of spectral rendering: the example office at -cs 3 (RGB), 12, 24, 41 and 81 bands, as time against RGB's.
 
 Workloads, one thread each (CPU seconds; the fastest of --repeat runs):
-  grid     rtrace -I -ab 3 -aa 0 -ad 512 on the 96 sensors (path tracing)
+  grid     rtrace -I -ab 3 -aa 0 -ad 4096 on the 96 sensors (path tracing)
   cache    rtrace -I -ab 5 on the 96 sensors (Brume's defaults: the irradiance cache)
   picture  rpict -ab 1 -x 240 -y 180, the seated view (the cache, rpict's defaults)
   start    rtrace on one ray: loading the scene and, with bands, fitting the RGB-to-spectrum table
@@ -22,7 +22,7 @@ from bench import GRID, ROOT, SCENE, Timer, best_of, find_radiance, frozen_octre
 BANDS = [3, 12, 24, 41, 81]
 SEATED = ["-vp", "0.3", "0.3", "1.6", "-vd", "1", "0.8", "-0.3", "-vh", "75", "-vv", "55"]
 WORKLOADS = {  # name: (program, options, standard input)
-    "grid": ("rtrace", ["-h", "-I", "-ab", "3", "-aa", "0", "-ad", "512", "-u-"], GRID),
+    "grid": ("rtrace", ["-h", "-I", "-ab", "3", "-aa", "0", "-ad", "4096", "-u-"], GRID),
     "cache": ("rtrace", ["-h", "-I", "-ab", "5", "-u-"], GRID),
     "picture": ("rpict", ["-ab", "1", "-x", "240", "-y", "180"] + SEATED, os.devnull),
     "start": ("rtrace", ["-h", "-ab", "0"], None),
@@ -94,7 +94,7 @@ def plot(times, png):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
-    ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--repeat", type=int, default=3)
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         times = measure(args.bin, args.repeat, tmp)

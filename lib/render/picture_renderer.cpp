@@ -20,10 +20,10 @@ std::vector<int> gridLines(int n, int spacing) {
     return lines;
 }
 
-// Radiance's test for samples too different to interpolate between: any channel differing by more than
+// Radiance's test for samples too different to interpolate between: any of R, G, B differing by more than
 // `threshold` times the smaller value.
-bool differ(const float* a, const float* b, int channels, double threshold) {
-    for (int i = 0; i < channels; ++i)
+bool differ(const float* a, const float* b, double threshold) {
+    for (int i = 0; i < 3; ++i)
         if (a[i] - b[i] > threshold * b[i] || b[i] - a[i] > threshold * a[i]) return true;
     return false;
 }
@@ -34,6 +34,7 @@ public:
         : integrator_(integrator), view_(view), s_(s), progress_(progress), w_(s.xres), h_(s.yres) {
         values_.width = w_, values_.height = h_, values_.channels = c_;
         values_.values.assign(size_t(w_) * h_ * c_, 0.f);
+        colours_.assign(size_t(w_) * h_ * 3, 0.f);
         depth_.assign(size_t(w_) * h_, 0.f);
         traced_.assign(size_t(w_) * h_, 0);
     }
@@ -58,6 +59,9 @@ public:
 private:
     size_t at(int x, int row) const { return size_t(row) * w_ + x; }
     float* pixel(int x, int row) { return values_.at(x, row); }
+    // A traced pixel's RGB: what the first pass compares (bands would differ more often than the colour
+    // seen, the more of them there are).
+    float* colour(int x, int row) { return &colours_[3 * at(x, row)]; }
 
     // The three channels -pRGB, -pXYZ or -pc ask for (Radiance's rpict writes XYZ × 179, as rtrace does).
     Picture picture() const {
@@ -92,6 +96,8 @@ private:
                             ? integrator_.irradianceAtHit(ray->org, ray->dir, index)
                             : integrator_.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);
         for (int c = 0; c < c_; ++c) pixel(x, row)[c] = rec.value[c];
+        Color3 rgb = toRgb(rec.value);
+        std::copy(rgb.begin(), rgb.end(), colour(x, row));
         // Radiance's ray distance: the mirror image's when the mirrored light dominates, else the effective one.
         bool mirrored = brightness(rec.mirrored) > 0.5f * brightness(rec.value);
         double d = mirrored ? rec.mirroredLength : rec.effectiveLength;
@@ -126,11 +132,11 @@ private:
         std::vector<char> busy((xs.size() - 1) * (ys.size() - 1));
         for (size_t j = 0; j + 1 < ys.size(); ++j)
             for (size_t i = 0; i + 1 < xs.size(); ++i) {
-                const float* c[4] = {pixel(xs[i], ys[j]), pixel(xs[i + 1], ys[j]), pixel(xs[i], ys[j + 1]),
-                                     pixel(xs[i + 1], ys[j + 1])};
+                const float* c[4] = {colour(xs[i], ys[j]), colour(xs[i + 1], ys[j]), colour(xs[i], ys[j + 1]),
+                                     colour(xs[i + 1], ys[j + 1])};
                 bool b = false;
                 for (int p = 0; p < 4 && !b; ++p)
-                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], c_, s_.sampleThreshold);
+                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], s_.sampleThreshold);
                 busy[j * (xs.size() - 1) + i] = b;
             }
         // Tile (i, j) spans columns xs[i]..xs[i+1] and rows ys[j]..ys[j+1], edges included: a pixel on an
@@ -185,6 +191,7 @@ private:
     static constexpr int kBand = 32;  // rows traced together
     int w_, h_, c_ = Spectrum::defaultChannels();
     PixelSpectra values_;
+    std::vector<float> colours_;
     std::vector<float> depth_;
     std::vector<char> traced_;
     std::vector<int> xs_, ys_;  // the first pass's columns and rows
