@@ -2,7 +2,8 @@
 # Brume benchmark (make bench): bash bench/run.sh BIN_DIR [options]; see bench/README.md.
 # bench.py (rtrace) takes every option but --skip-rpict, --skip-cache and --rerun-radiance; rpict.py (pictures)
 # takes --repeat, --threads and --remake-reference, and is left out with --skip-rpict; cache.py (time against
-# error of the irradiance caches) takes --remake-reference and --rerun-radiance, and is left out with --skip-cache.
+# error of the irradiance caches) takes --remake-reference and --rerun-radiance, and is left out with --skip-cache;
+# spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral.
 set -euo pipefail
 bin=${1:-build/bin}
 shift || true
@@ -10,16 +11,20 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 command -v python3 > /dev/null || { echo "bench: python3 is needed" >&2; exit 1; }
 skip_rpict=0
 skip_cache=0
+skip_spectral=0
 bench_args=()
 rpict_args=()
 cache_args=()
+spectral_args=()
 while (($#)); do
     case $1 in
         --skip-rpict) skip_rpict=1 ;;
         --skip-cache) skip_cache=1 ;;
+        --skip-spectral) skip_spectral=1 ;;
         --rerun-radiance) cache_args+=("$1") ;;
         --remake-reference) bench_args+=("$1"); rpict_args+=("$1"); cache_args+=("$1") ;;
-        --repeat | --threads) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); shift ;;
+        --repeat) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); spectral_args+=("$1" "$2"); shift ;;
+        --threads) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); shift ;;
         *) bench_args+=("$1") ;;
     esac
     shift
@@ -32,4 +37,8 @@ fi
 if ((!skip_cache)); then
     echo
     python3 "$here/cache.py" --bin "$bin" "${cache_args[@]}"  # likewise
+fi
+if ((!skip_spectral)); then
+    echo
+    python3 "$here/spectral.py" --bin "$bin" "${spectral_args[@]}"
 fi

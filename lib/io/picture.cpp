@@ -155,14 +155,19 @@ Picture readRadiancePicture(std::istream& in, const std::string& name) {
 HyperspectralPicture readHyperspectralPicture(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) bad(path, "cannot open hyperspectral picture");
+    return readHyperspectralPicture(in, path);
+}
+
+HyperspectralPicture readHyperspectralPicture(std::istream& in, const std::string& path) {
     HyperspectralPicture h;
     Picture& p = h.picture;
     if (readHeader(in, path, p) != "Radiance_spectra") bad(path, "not a hyperspectral picture (FORMAT=Radiance_spectra)");
     h.bands = std::atoi(headerValue(p.header, "NCOMP=").c_str());
     std::istringstream splits(headerValue(p.header, "WAVELENGTH_SPLITS="));
     double split[4];
-    if (!(splits >> split[0] >> split[1] >> split[2] >> split[3]) || !(split[0] != split[3]))
-        bad(path, "missing or bad WAVELENGTH_SPLITS=");
+    if (!(splits >> split[0] >> split[1] >> split[2] >> split[3])) bad(path, "missing or bad WAVELENGTH_SPLITS=");
+    auto nm = [](double v) { return v > 0 && v < 1e5; };
+    if (!nm(split[0]) || !nm(split[3]) || split[0] == split[3]) bad(path, "missing or bad WAVELENGTH_SPLITS=");
     h.first = split[0], h.last = split[3];
     if (h.bands <= 3 || h.bands > 1024) bad(path, "bad NCOMP= (4 to 1024 bands)");
     Resolution o = readResolution(in, path);

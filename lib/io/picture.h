@@ -41,6 +41,7 @@ struct HyperspectralPicture {
 };
 // Throws Error naming the file on anything malformed or truncated.
 HyperspectralPicture readHyperspectralPicture(const std::string& path);
+HyperspectralPicture readHyperspectralPicture(std::istream& in, const std::string& name);
 
 // Writes `picture` as a run-length encoded Radiance picture: "#?RADIANCE", the header lines (without
 // PRIMARIES= when XYZE), FORMAT=, the blank line, "-Y height +X width" and the scanlines, laid out as

@@ -167,3 +167,22 @@ TEST(Picture, ShortRunsBeforeARunAreEncodedAsRadianceEncodesThem) {
     EXPECT_EQ(scanline, (std::string{2, 2, 0, 17, char(145), char(128), char(145), char(128), char(145), char(128),
                                      char(130), char(127), char(143), char(128)}));
 }
+
+// A hyperspectral picture Radiance 6.1 wrote (rtrace -co -fac -x 2 -y 2, test/data/spectral/spic.hsr): its
+// pixels are the spectra it was given (spic_values.txt there), to the 8-bit mantissas' precision.
+TEST(HyperspectralPicture, ReadsWhatRadianceWrote) {
+    HyperspectralPicture h = readHyperspectralPicture(std::string(BRUME_TEST_DATA) + "/spectral/spic.hsr");
+    ASSERT_EQ(h.picture.width, 2);
+    ASSERT_EQ(h.picture.height, 2);
+    EXPECT_EQ(h.bands, 6);
+    EXPECT_EQ(h.first, 700);
+    EXPECT_EQ(h.last, 400);
+    const float first[6] = {.1f, .2f, .4f, .6f, .8f, 1.f};  // the first pixel written: top left
+    for (int b = 0; b < 6; ++b) EXPECT_NEAR(h.values[size_t(b)], first[b], 0.004) << "band " << b;
+    std::string bytes = "#?RADIANCE\nNCOMP=6\nWAVELENGTH_SPLITS= 700 588 480 400\nFORMAT=Radiance_spectra\n\n"
+                        "-Y 2 +X 2\n" + std::string(20, '\x80');
+    std::istringstream truncated(bytes);
+    EXPECT_THROW(readHyperspectralPicture(truncated, "t.hsr"), Error);
+    std::istringstream rgbe("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n");
+    EXPECT_THROW(readHyperspectralPicture(rgbe, "p.hdr"), Error);
+}

@@ -1,5 +1,5 @@
 // What the picture and data-file fuzz targets do with one input, shared with the corpus replay test: read it
-// as colorpict and the *data patterns do, then look values up inside, at and far beyond the grid's edges.
+// as colorpict, specpict and the *data patterns do, then look values up inside, at and far beyond the grid's edges.
 // Errors (brume::Error) are fine; crashes are not, and a value that is not a finite number makes these
 // return false.
 #pragma once
@@ -39,13 +39,20 @@ inline bool exerciseDataFile(std::string_view bytes) {
     }
 }
 
+// As colorpict reads it, then as specpict reads a hyperspectral picture.
 inline bool exercisePicture(std::string_view bytes) {
-    std::istringstream in{std::string(bytes)};
+    bool finite = true;
     try {
-        return lookupsAreFinite(DataGrid::fromPicture(readRadiancePicture(in, "fuzz.hdr")));
+        std::istringstream in{std::string(bytes)};
+        finite = lookupsAreFinite(DataGrid::fromPicture(readRadiancePicture(in, "fuzz.hdr")));
     } catch (const Error&) {
-        return true;
     }
+    try {
+        std::istringstream in{std::string(bytes)};
+        finite = lookupsAreFinite(DataGrid::fromHyperspectralPicture(readHyperspectralPicture(in, "fuzz.hsr"))) && finite;
+    } catch (const Error&) {
+    }
+    return finite;
 }
 
 }  // namespace brume

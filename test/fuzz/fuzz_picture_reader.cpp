@@ -1,4 +1,4 @@
-// libFuzzer target for the Radiance picture reader (RGBE/XYZE, every encoding and scan order), as colorpict reads it (see README.md).
+// libFuzzer target for the Radiance picture readers (RGBE/XYZE, every encoding and scan order, and hyperspectral pictures), as colorpict and specpict read them (see README.md).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
