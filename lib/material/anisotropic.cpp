@@ -1,8 +1,8 @@
 #include "material/anisotropic.h"
 
 #include "sampling/warp.h"
-#include "util/error.h"
 #include "spectrum/rgb_to_spectrum.h"
+#include "util/error.h"
 
 namespace brume {
 

@@ -6,8 +6,8 @@
 #include "pattern/pattern_frame.h"
 #include "pattern/pattern_library.h"
 #include "scene/raypath.h"
-#include "util/error.h"
 #include "spectrum/rgb_to_spectrum.h"
+#include "util/error.h"
 
 namespace brume {
 

@@ -1,7 +1,8 @@
 #include "material/function_brdf.h"
 
-#include "util/error.h"
+#include "spectrum/colorimetry.h"
 #include "spectrum/rgb_to_spectrum.h"
+#include "util/error.h"
 
 namespace brume {
 
@@ -59,7 +60,7 @@ double FunctionBrdfMaterial::value(const Shading& s, const dvec3& wi) const {
     PatternEvaluator& e = *s.evaluator;
     f_.frame.channels(*s.hit, e.channels);
     dvec3 n = f_.frame.toPatternDirection(s.normal, *s.hit);
-    Spectrum color = color_ * s.pattern;
+    Color3 color = toRgb(color_ * s.pattern);  // RGB however many bands
     e.channels[cal::NxP] = n.x, e.channels[cal::NyP] = n.y, e.channels[cal::NzP] = n.z;
     e.channels[cal::RdotP] = s.cosine;
     e.channels[cal::CrP] = color[0], e.channels[cal::CgP] = color[1], e.channels[cal::CbP] = color[2];

@@ -8,8 +8,8 @@
 #include "pattern/function_object.h"
 #include "pattern/spectral_pattern.h"
 #include "pattern/text_pattern.h"
-#include "util/error.h"
 #include "spectrum/rgb_to_spectrum.h"
+#include "util/error.h"
 
 namespace brume {
 

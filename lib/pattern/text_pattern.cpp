@@ -6,8 +6,8 @@
 
 #include "pattern/text_layout.h"
 #include "scene/raypath.h"
-#include "util/error.h"
 #include "spectrum/rgb_to_spectrum.h"
+#include "util/error.h"
 
 namespace brume {
 
