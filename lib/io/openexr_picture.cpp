@@ -18,6 +18,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spectrum/color_output.h"
 #include "util/error.h"
 #include "util/header.h"
 #include "util/pending_file.h"
@@ -26,13 +27,16 @@ namespace brume {
 
 namespace {
 
-// Radiance's WHTEFFICACY (color.h): lumens per watt of its equal-energy white, luminance = 179 × Y.
-constexpr double kWhiteEfficacy = 179;
+// Luminance (cd/m²) per unit of a pixel's value: Radiance's WHTEFFICACY (color.h, lumens per watt of its
+// equal-energy white) for RGB, whose luminance is 179 × Y; 1 for XYZE, whose Y Radiance 6.1 writes in cd/m²
+// (rpict -pXYZ, ra_xyze).
+double whiteEfficacy(bool xyz) { return xyz ? 1 : 179; }
 const std::vector<std::string> kRgb = {"R", "G", "B"};
 
-// Radiance's default primaries (color.h STDPRIMS, the "nominal CRT" ones with an equal-energy white).
-const Imf::Chromaticities kRadiancePrimaries({0.640f, 0.330f}, {0.290f, 0.600f}, {0.150f, 0.060f},
-                                             {1 / 3.0f, 1 / 3.0f});
+Imf::Chromaticities chromaticities(const Primaries& p) {
+    auto xy = [](Chromaticity c) { return Imath::V2f(float(c.x), float(c.y)); };
+    return Imf::Chromaticities(xy(p.red), xy(p.green), xy(p.blue), xy(p.white));
+}
 // OpenEXR's convention for CIE XYZ in R, G, B (OpenEXR Technical Introduction, "CIE XYZ Color").
 const Imf::Chromaticities kXyzPrimaries({1, 0}, {0, 1}, {0, 0}, {1 / 3.0f, 1 / 3.0f});
 
@@ -126,8 +130,8 @@ Imf::Header exrHeader(const Picture& p) {
     if (!(aspect > 0) || !(exposure > 0)) throw std::runtime_error("bad PIXASPECT= or EXPOSURE= in the header");
     Imf::Header h(p.width, p.height, float(1 / aspect), Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
     SortedHeader s = sortHeader(p.header);
-    Imf::addChromaticities(h, p.xyz ? kXyzPrimaries : s.primaries.value_or(kRadiancePrimaries));
-    Imf::addWhiteLuminance(h, float(kWhiteEfficacy / exposure));
+    Imf::addChromaticities(h, p.xyz ? kXyzPrimaries : s.primaries.value_or(chromaticities(kRadiancePrimaries)));
+    Imf::addWhiteLuminance(h, float(whiteEfficacy(p.xyz) / exposure));
     addDates(h, s);
     addString(h, "comments", s.commands, '\n');
     addString(h, "Software", s.software, '\n');
@@ -231,10 +235,8 @@ void addDateLines(std::vector<std::string>& lines, const Imf::Header& h) {
 }
 
 std::string primariesLine(const Imf::Chromaticities& c) {
-    char s[128];
-    std::snprintf(s, sizeof s, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f", c.red.x, c.red.y, c.green.x,
-                  c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y);
-    return s;
+    return brume::primariesLine(Primaries{{c.red.x, c.red.y}, {c.green.x, c.green.y}, {c.blue.x, c.blue.y},
+                                          {c.white.x, c.white.y}});
 }
 
 // Fills the header lines, exposure and pixel aspect from the attributes, in rpict's order.
@@ -247,9 +249,9 @@ void readHeaderLines(const Imf::Header& h, Picture& p) {
     p.pixelAspect = 1 / double(h.pixelAspectRatio());
     if (std::abs(p.pixelAspect - 1) > 1e-6) lines.push_back(formatted("PIXASPECT=%f", p.pixelAspect));
     addDateLines(lines, h);
-    if (Imf::hasWhiteLuminance(h)) p.exposure = kWhiteEfficacy / Imf::whiteLuminance(h);
-    if (std::abs(p.exposure - 1) > 1e-6) lines.push_back(formatted("EXPOSURE=%.4e", p.exposure));
     p.xyz = Imf::hasChromaticities(h) && isXyz(Imf::chromaticities(h));
+    if (Imf::hasWhiteLuminance(h)) p.exposure = whiteEfficacy(p.xyz) / Imf::whiteLuminance(h);
+    if (std::abs(p.exposure - 1) > 1e-6) lines.push_back(formatted("EXPOSURE=%.4e", p.exposure));
     if (Imf::hasChromaticities(h) && !p.xyz) lines.push_back(primariesLine(Imf::chromaticities(h)));
 }
 

@@ -9,13 +9,15 @@
 // PIXASPECT= (product)        pixelAspectRatio (float, required)    1 / PIXASPECT: OpenEXR's is width/height
 // CAPDATE=                    capDate (string, standard)            same "YYYY:MM:DD hh:mm:ss" local time
 // GMT=                        utcOffset (float, standard)           GMT − CAPDATE in seconds
-// EXPOSURE= (product)         whiteLuminance (float, standard)      179 / EXPOSURE cd/m² for (1,1,1)
+// EXPOSURE= (product)         whiteLuminance (float, standard)      179 / EXPOSURE cd/m² for RGB (1,1,1),
+//                                                                   1 / EXPOSURE for XYZE (below)
 // PRIMARIES=                  chromaticities (standard)             Radiance's default primaries without one
 // any other line              radianceHeader (string)               one line each, in order
 //
 // XYZE pictures keep X, Y, Z in the channels R, G, B with the chromaticities red (1,0), green (0,1),
 // blue (0,0), white (1/3,1/3): OpenEXR's convention for CIE XYZ (a channel named Y would be read as
-// luminance). Radiance's XYZ has Y = luminance / 179, as its RGB has, hence the same whiteLuminance.
+// luminance). Radiance 6.1's XYZE has Y in cd/m² (rpict -pXYZ and ra_xyze multiply by 179), hence
+// whiteLuminance 1 / EXPOSURE for them.
 #pragma once
 #include <string>
 

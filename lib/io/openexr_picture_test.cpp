@@ -103,7 +103,8 @@ TEST(OpenExrPicture, ExposureAspectAndOtherLinesSurvive) {
     EXPECT_DOUBLE_EQ(q.exposure, 2);
 }
 
-// OpenEXR's convention for CIE XYZ: X, Y, Z in R, G, B, told apart by the chromaticities.
+// OpenEXR's convention for CIE XYZ: X, Y, Z in R, G, B, told apart by the chromaticities; Y in cd/m² as
+// Radiance 6.1's XYZE holds it, so a white luminance of 1 (179 for RGB).
 TEST(OpenExrPicture, XyzPicturesUseOpenExrsXyzChromaticities) {
     ScratchDir dir;
     Picture p = rendered(2, 2, {"rpict -x 2 -y 2", "PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333"});
@@ -113,6 +114,7 @@ TEST(OpenExrPicture, XyzPicturesUseOpenExrsXyzChromaticities) {
         Imf::InputFile file(dir.file("xyz.exr").c_str());
         EXPECT_EQ(Imf::chromaticities(file.header()).red, Imath::V2f(1, 0));
         EXPECT_EQ(Imf::chromaticities(file.header()).blue, Imath::V2f(0, 0));
+        EXPECT_FLOAT_EQ(Imf::whiteLuminance(file.header()), 1);
     }
     Picture q = readPicture(dir.file("xyz.exr"));
     EXPECT_TRUE(q.xyz);
