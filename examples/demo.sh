@@ -64,6 +64,16 @@ paste "$grid" <(printf '%s\n' "$values") | awk '
   }'
 awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" 'BEGIN { printf "\nrtrace run time: %.2f s on %d threads\n", t / 1000, n }'
 
+# The same sensors in 41 wavelength bands (RGB colours become smooth spectra): photopic illuminance and
+# CIE S 026 melanopic equivalent daylight illuminance (EDI), with Brume's irradiance cache (its defaults).
+sopts=(-h -I -ab 5 -cs 41 -n "$threads")
+echo
+echo "  rtrace ${sopts[*]} -pY | -pMD65 office.rad < grid.txt    (41 bands, 380-780 nm)"
+mean() { awk '{ s += $1; n++ } END { printf "%.0f", s / n }'; }
+lux=$("$rtrace" "${sopts[@]}" -pY "$scene" < "$grid" | mean)
+edi=$("$rtrace" "${sopts[@]}" -pMD65 "$scene" < "$grid" | mean)
+echo "Mean illuminance $lux lx, mean melanopic EDI $edi lx (the panels' white is equal-energy light)"
+
 # A picture from a standing eye by the west wall, looking at the desks: diffuse interreflection from the
 # irradiance cache (-ab 1 with rpict's -aa .2 -ad 512; bounces past the first by Russian roulette), every
 # other pixel traced first and the rest traced or interpolated (-ps 2 -pt .1). -t 5 reports progress every
