@@ -1,0 +1,79 @@
+// Tracking through heterogeneous media by null collisions: the extinction σ_t(t) along a ray is topped up to a
+// majorant σ̄ ≥ σ_t by fictitious particles that do nothing, so that free flights are sampled in closed form
+// with σ̄ and each tentative collision is a real one or a null one. Unbiased for any majorant; the closer σ̄
+// to σ_t, the fewer tentative collisions. Extinction is a spectrum (one value per band); the majorant is
+// one number over all bands.
+#pragma once
+#include <cmath>
+#include <optional>
+
+#include "sampling/random.h"
+#include "spectrum/spectrum.h"
+
+namespace brume {
+
+// A stretch [t0, t1] of a ray over which σ̄ ≥ σ_t(t) in every band.
+struct MajorantSegment {
+    double t0, t1, majorant;
+};
+
+// Ratio tracking (Novák, Selle and Jarosz 2014): the transmittance exp(−∫σ_t dt) over `segments` (in order
+// along the ray), estimated without bias as the product of (1 − σ_t/σ̄) at tentative collisions. Once every
+// band is below 0.1, Russian roulette ends it (0) or carries on with the estimate scaled up: deep smoke costs
+// a few collisions, not thousands.
+template <class Segments, class Extinction>
+Spectrum ratioTracking(const Segments& segments, const Extinction& extinction, Random& random) {
+    Spectrum transmittance(1.f);
+    for (const MajorantSegment& s : segments) {
+        if (!(s.majorant > 0)) continue;
+        for (double t = s.t0;;) {
+            t -= std::log1p(-random.uniform()) / s.majorant;
+            if (t >= s.t1) break;
+            Spectrum sigma = extinction(t);
+            for (int i = 0; i < transmittance.size(); ++i)
+                transmittance[i] *= std::max(0.f, 1 - float(sigma[i] / s.majorant));
+            float most = transmittance.maxValue();
+            if (most < 0.1f) {  // roulette: survive with the largest band's share, weight back up
+                if (random.uniform() >= most) return Spectrum(0.f, transmittance.size());
+                transmittance *= 1 / most;
+            }
+        }
+    }
+    return transmittance;
+}
+
+// The first real collision of delta tracking (Woodcock et al. 1965) along `segments`, for a path whose bands
+// carry `weight`, with spectral tracking's probabilities (Kutz, Habel, Li and Novák 2017): a tentative
+// collision is real with probability ∝ mean(weight·σ_t), null ∝ mean(weight·(σ̄ − σ_t)), and the weight is
+// divided by that probability, so every band stays unbiased whatever its σ_t. Returns the collision's t
+// with `weight` updated (times σ_t/σ̄ over the probability: the caller multiplies by the albedo), or
+// nullopt past the last segment, `weight` updated for the way through.
+template <class Segments, class Extinction>
+std::optional<double> deltaTracking(const Segments& segments, const Extinction& extinction, Spectrum& weight,
+                                    Random& random) {
+    for (const MajorantSegment& s : segments) {
+        if (!(s.majorant > 0)) continue;
+        for (double t = s.t0;;) {
+            t -= std::log1p(-random.uniform()) / s.majorant;
+            if (t >= s.t1) break;
+            Spectrum sigma = extinction(t);
+            double real = 0, null = 0;
+            for (int i = 0; i < weight.size(); ++i) {
+                double a = std::abs(weight[i]), sigmaT = std::min(double(sigma[i]), s.majorant);
+                real += a * sigmaT, null += a * (s.majorant - sigmaT);
+            }
+            if (!(real + null > 0)) return std::nullopt;  // nothing left to carry
+            double pReal = real / (real + null);
+            bool isReal = random.uniform() < pReal;
+            double p = isReal ? pReal : 1 - pReal;
+            for (int i = 0; i < weight.size(); ++i) {
+                double sigmaT = std::min(double(sigma[i]), s.majorant);
+                weight[i] *= float((isReal ? sigmaT : s.majorant - sigmaT) / (s.majorant * p));
+            }
+            if (isReal) return t;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace brume
