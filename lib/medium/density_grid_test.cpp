@@ -1,0 +1,213 @@
+#include "medium/density_grid.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <openvdb/io/File.h>
+#include <openvdb/tools/ChangeBackground.h>
+#include <openvdb/tools/LevelSetSphere.h>
+#include <openvdb/tools/LevelSetUtil.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+
+#include "medium/testing.h"
+#include "util/error.h"
+
+namespace brume {
+namespace {
+
+using namespace medium::testing;
+
+// ∫ density along the segment a→b (midpoint rule; exact enough for piecewise-linear profiles at this step).
+double opticalDepth(const DensityGrid& grid, dvec3 a, dvec3 b, int steps = 20000) {
+    double sum = 0;
+    for (int i = 0; i < steps; ++i) sum += grid.density(a + (i + 0.5) / steps * (b - a));
+    return sum * glm::length(b - a) / steps;
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(DensityGrid, BoundsAreWhereInterpolationReaches) {
+    // Voxels 0..9 of 0.1: centres 0 … 0.9, cells −0.05 … 0.95, interpolation −0.1 … 1.0.
+    DensityGrid box = densityOf(boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f, 0.1));
+    EXPECT_NEAR(box.bounds().lo.x, -0.1, 1e-12);
+    EXPECT_NEAR(box.bounds().lo.z, -0.1, 1e-12);
+    EXPECT_NEAR(box.bounds().hi.y, 1.0, 1e-12);
+    EXPECT_EQ(box.activeVoxelCount(), 1000u);
+    EXPECT_EQ(box.maxDensity(), 1.0);
+}
+
+TEST(DensityGrid, ConstantBoxIsConstantBetweenItsOuterVoxelCentresAndFallsToZeroOneVoxelBeyond) {
+    DensityGrid box = densityOf(boxGrid({0, 0, 0}, {9, 9, 9}, 2.0f, 0.1));
+    EXPECT_DOUBLE_EQ(box.density({0.45, 0.45, 0.45}), 2.0);
+    EXPECT_DOUBLE_EQ(box.density({0.0, 0.3, 0.9}), 2.0);     // outermost voxel centres
+    EXPECT_NEAR(box.density({-0.05, 0.45, 0.45}), 1.0, 1e-9);  // cell face: half way down
+    EXPECT_NEAR(box.density({0.45, 0.95, 0.45}), 1.0, 1e-9);
+    EXPECT_NEAR(box.density({-0.05, -0.05, 0.45}), 0.5, 1e-9);  // cell edge
+    EXPECT_NEAR(box.density({1.0, 0.45, 0.45}), 0.0, 1e-9);    // bounds
+    EXPECT_EQ(box.density({1.2, 0.45, 0.45}), 0.0);
+    EXPECT_EQ(box.density({-50, 7, 1e6}), 0.0);
+}
+
+TEST(DensityGrid, InterpolationKeepsTheBoxsOpticalDepthAtItsCellExtent) {
+    // 10 voxels of 0.1 at density 1: τ = 1.0 across, the ramps beyond the outer centres making up the half cells.
+    DensityGrid box = densityOf(boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f, 0.1));
+    EXPECT_NEAR(opticalDepth(box, {-0.5, 0.45, 0.45}, {1.5, 0.45, 0.45}), 1.0, 1e-6);
+}
+
+TEST(DensityGrid, FogSphereIsDenseInsideAndClearOutside) {
+    openvdb::initialize();
+    auto sphere = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0), 0.05f);
+    openvdb::tools::sdfToFogVolume(*sphere);
+    DensityGrid fog = densityOf(sphere);
+    EXPECT_DOUBLE_EQ(fog.density({0, 0, 0}), 1.0);
+    EXPECT_DOUBLE_EQ(fog.density({0.5, -0.3, 0.2}), 1.0);
+    EXPECT_EQ(fog.density({1.1, 0, 0}), 0.0);
+    EXPECT_EQ(fog.density({0.8, 0.8, 0}), 0.0);
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_LT(fog.bounds().lo[a], -1.0);
+        EXPECT_GT(fog.bounds().lo[a], -1.0 - 0.1);
+        EXPECT_GT(fog.bounds().hi[a], 1.0 - 0.05);  // the fog's edge is the surface, the last voxel within it
+        EXPECT_LT(fog.bounds().hi[a], 1.0 + 0.1);
+    }
+}
+
+TEST(DensityGrid, LevelSetIsRefused) {
+    openvdb::initialize();
+    auto sdf = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0), 0.05f);
+    EXPECT_EQ(errorOf([&] { densityOf(sdf, "s.vdb: grid \"sphere\""); }),
+              "s.vdb: grid \"sphere\" is a level set, not a density");
+}
+
+TEST(DensityGrid, HostileVoxelsReadAsZero) {
+    auto grid = boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f);
+    grid->tree().setValue({2, 2, 2}, std::numeric_limits<float>::quiet_NaN());
+    grid->tree().setValue({4, 4, 4}, -3.0f);
+    grid->tree().setValue({6, 6, 6}, std::numeric_limits<float>::infinity());
+    grid->tree().setValueOff({20, 20, 20}, 7.0f);  // inactive, yet non-zero
+    setWarningsEnabled(false);
+    DensityGrid clean = densityOf(grid);
+    setWarningsEnabled(true);
+    EXPECT_EQ(clean.density({2, 2, 2}), 0.0);
+    EXPECT_EQ(clean.density({4, 4, 4}), 0.0);
+    EXPECT_EQ(clean.density({6, 6, 6}), 0.0);
+    EXPECT_EQ(clean.density({20, 20, 20}), 0.0);
+    EXPECT_DOUBLE_EQ(clean.density({2.5, 2, 2}), 0.5);  // no NaN leaks into the neighbours' interpolation
+    EXPECT_EQ(clean.maxDensity(), 1.0);
+}
+
+TEST(DensityGrid, NonZeroBackgroundReadsAsZeroWithAWarning) {
+    auto grid = boxGrid({0, 0, 0}, {3, 3, 3}, 1.0f);
+    openvdb::tools::changeBackground(grid->tree(), 1.0f);
+    testing::internal::CaptureStderr();
+    DensityGrid box = densityOf(grid, "box.vdb: grid \"density\"");
+    EXPECT_NE(testing::internal::GetCapturedStderr().find("box.vdb: grid \"density\" has background 1"),
+              std::string::npos);
+    EXPECT_EQ(box.density({100, 0, 0}), 0.0);
+    EXPECT_EQ(box.density({5, 1, 1}), 0.0);
+    EXPECT_EQ(box.density({1, 1, 1}), 1.0);
+}
+
+TEST(DensityGrid, EmptyGridHasEmptyBoundsAndNoDensity) {
+    openvdb::initialize();
+    DensityGrid empty = densityOf(openvdb::FloatGrid::create(0.0f));
+    EXPECT_TRUE(empty.bounds().empty());
+    EXPECT_EQ(empty.density({0, 0, 0}), 0.0);
+    EXPECT_EQ(empty.activeVoxelCount(), 0u);
+    EXPECT_EQ(empty.maxDensity(), 0.0);
+}
+
+TEST(DensityGrid, FileErrorsNameTheFileAndItsGrids) {
+    openvdb::initialize();
+    const std::string path = ::testing::TempDir() + "brume_density_grid_test.vdb";
+    auto velocity = openvdb::Vec3SGrid::create();
+    velocity->setName("vel");
+    auto soot = boxGrid({0, 0, 0}, {1, 1, 1}, 1.0f);
+    soot->setName("soot");
+    openvdb::io::File(path).write({velocity, soot});
+    EXPECT_EQ(errorOf([&] { DensityGrid grid(path); }),
+              path + ": no grid \"density\" (the file holds \"soot\", \"vel\")");
+    EXPECT_EQ(errorOf([&] { DensityGrid grid(path, "vel"); }),
+              path + ": grid \"vel\" holds vec3s values, not float densities");
+    EXPECT_EQ(DensityGrid(path, "soot").activeVoxelCount(), 8u);
+    EXPECT_NE(errorOf([&] { DensityGrid grid(path + ".absent"); }).find(path + ".absent: "), std::string::npos);
+    std::filesystem::remove(path);
+}
+
+TEST(DensityGrid, Smoke1StatisticsAreTheFilesHalfFloatsIncluded) {
+    BRUME_SHARED_GRID_OR_SKIP(path, "openvdb_smoke1.vdb");
+    const auto start = std::chrono::steady_clock::now();
+    DensityGrid smoke(path);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("smoke1: loaded in %.3f s, tree %.1f MB (file %.1f MB)\n", seconds, smoke.memoryBytes() / 1e6,
+                std::filesystem::file_size(path) / 1e6);
+    EXPECT_EQ(smoke.activeVoxelCount(), 1049275u);
+    EXPECT_NEAR(smoke.maxDensity(), 5.7148, 5e-5);
+    // Voxel centres (−33.571, −12.143, −25.952) … (18.810, 93.095, 26.905), one voxel (1/2.1) beyond.
+    const double voxel = 1 / 2.1;
+    EXPECT_NEAR(smoke.bounds().lo.x, -33.571 - voxel, 1e-3);
+    EXPECT_NEAR(smoke.bounds().lo.y, -12.143 - voxel, 1e-3);
+    EXPECT_NEAR(smoke.bounds().hi.z, 26.905 + voxel, 1e-3);
+    EXPECT_LT(smoke.memoryBytes(), 4 * std::filesystem::file_size(path));  // sparse, no dense copy
+    const auto lookups = std::chrono::steady_clock::now();
+    double sum = 0;
+    for (int i = 0; i < 1000000; ++i) sum += smoke.density({-10 + 1e-5 * i, 40, 0});
+    std::printf("smoke1: %.0f ns per density lookup (sum %g)\n",
+                std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - lookups).count() / 1e6, sum);
+}
+
+TEST(DensityGrid, WdasCloudCountsItsTilesAndReadsDensityInThem) {
+    BRUME_SHARED_GRID_OR_SKIP(path, "wdas_cloud_sixteenth.vdb");
+    DensityGrid cloud(path);
+    const openvdb::FloatTree& tree = cloud.voxels().grid->tree();
+    EXPECT_EQ(cloud.activeVoxelCount(), 415642u);
+    EXPECT_EQ(tree.activeLeafVoxelCount(), 349082u);  // a loader walking only leaves misses 66,560 voxels
+    // Bounds from the transform (the file's "voxelsize" metadata, 0.0, is stale): centres ± 10/3.
+    EXPECT_NEAR(cloud.bounds().lo.x, -220.0 - 10.0 / 3, 1e-3);
+    EXPECT_NEAR(cloud.bounds().hi.y, 213.333 + 10.0 / 3, 1e-3);
+    int tiles = 0;
+    for (auto it = tree.cbeginValueOn(); it; ++it) {
+        if (!it.isTileValue()) continue;
+        openvdb::CoordBBox box;
+        it.getBoundingBox(box);
+        const openvdb::Vec3d centre = cloud.voxels().grid->indexToWorld(box.getCenter());
+        EXPECT_NEAR(cloud.density({centre.x(), centre.y(), centre.z()}), *it, 1e-6);
+        ++tiles;
+    }
+    EXPECT_EQ(tiles, 66560 / 512);
+}
+
+TEST(DensityGrid, HoudiniBoxWithBackgroundOneIsABoxOfDensityOne) {
+    BRUME_SHARED_GRID_OR_SKIP(path, "houdini_unit_box_density1.vdb");
+    setWarningsEnabled(false);
+    DensityGrid box(path);
+    setWarningsEnabled(true);
+    EXPECT_EQ(box.activeVoxelCount(), 9261u);
+    EXPECT_NEAR(box.bounds().lo.x, -0.55, 1e-9);
+    EXPECT_NEAR(box.bounds().hi.z, 0.55, 1e-9);
+    EXPECT_DOUBLE_EQ(box.density({0, 0, 0}), 1.0);
+    EXPECT_EQ(box.density({0.6, 0, 0}), 0.0);
+    EXPECT_EQ(box.density({5, 0, 0}), 0.0);
+    // σ_t = 1 per unit density: τ through the centre is the cell extent, 21 × 0.05 (SMOKE_FACTS-style check).
+    EXPECT_NEAR(opticalDepth(box, {-1, 0, 0}, {1, 0, 0}), 1.05, 1e-6);
+}
+
+TEST(DensityGrid, SphereLevelSetFileIsRefused) {
+    BRUME_SHARED_GRID_OR_SKIP(path, "openvdb_sphere_levelset.vdb");
+    EXPECT_EQ(errorOf([&] { DensityGrid grid(path, "ls_sphere"); }),
+              path + ": grid \"ls_sphere\" is a level set, not a density");
+    EXPECT_EQ(errorOf([&] { DensityGrid grid(path); }), path + ": no grid \"density\" (the file holds \"ls_sphere\")");
+}
+
+}  // namespace
+}  // namespace brume

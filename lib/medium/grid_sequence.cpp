@@ -1,0 +1,45 @@
+#include "medium/grid_sequence.h"
+
+#include <algorithm>
+#include <string>
+
+#include "util/error.h"
+
+namespace brume {
+
+GridSequence::GridSequence(std::vector<KeyFrame> frames) : frames_(std::move(frames)) {
+    if (frames_.empty()) throw Error("grid sequence: no key frame");
+    std::ranges::stable_sort(frames_, {}, &KeyFrame::time);
+    for (std::size_t i = 1; i < frames_.size(); ++i)
+        if (frames_[i].time == frames_[i - 1].time)
+            throw Error("grid sequence: two key frames at time " + std::to_string(frames_[i].time) + " s");
+}
+
+double GridSequence::density(const dvec3& p, double time) const {
+    // The first frame later than `time`.
+    const auto later = std::ranges::upper_bound(frames_, time, {}, &KeyFrame::time);
+    if (later == frames_.begin()) return frames_.front().grid.density(p);
+    if (later == frames_.end()) return frames_.back().grid.density(p);
+    const KeyFrame& before = *(later - 1);
+    const double w = (time - before.time) / (later->time - before.time);
+    return (1 - w) * before.grid.density(p) + w * later->grid.density(p);
+}
+
+Bounds3 GridSequence::bounds() const {
+    Bounds3 b;
+    for (const KeyFrame& frame : frames_) b.include(frame.grid.bounds());
+    return b;
+}
+
+MajorantGrid GridSequence::majorant(double t0, double t1, int voxelsPerCell) const {
+    // The last frame at or before t0 (else the first) to the first at or after t1 (else the last).
+    const auto first = std::ranges::upper_bound(frames_, t0, {}, &KeyFrame::time);
+    const auto last = std::ranges::lower_bound(frames_, t1, {}, &KeyFrame::time);
+    const std::size_t i = first == frames_.begin() ? 0 : first - frames_.begin() - 1;
+    const std::size_t j = last == frames_.end() ? frames_.size() - 1 : last - frames_.begin();
+    std::vector<DensityGrid> grids;
+    for (std::size_t k = i; k <= std::max(i, j); ++k) grids.push_back(frames_[k].grid);
+    return MajorantGrid(grids, voxelsPerCell);
+}
+
+}  // namespace brume

@@ -1,0 +1,36 @@
+// Smoke that evolves in time: density grids at key instants (a fire simulation's output frames), linearly
+// interpolated in between (METHOD.md §3: key and intermediate instants).
+#pragma once
+#include <vector>
+
+#include "medium/density_grid.h"
+#include "medium/majorant_grid.h"
+
+namespace brume {
+
+struct KeyFrame {
+    double time;  // seconds
+    DensityGrid grid;
+};
+
+class GridSequence {
+public:
+    // Frames in any order (they are sorted by time); Error if there is none or two share a time.
+    explicit GridSequence(std::vector<KeyFrame> frames);
+
+    // Linear in time between the key frames around `time`; the first or last frame's density outside them.
+    double density(const dvec3& p, double time) const;
+    // Where any frame's density can be non-zero.
+    Bounds3 bounds() const;
+    // Bounds the density at every time in [t0, t1]: the majorants of the key frames from the last at or
+    // before t0 to the first at or after t1 (linear interpolation never exceeds its two ends). Built on
+    // each call (a pass over those frames' active voxels): keep it for the frame or interval it serves.
+    MajorantGrid majorant(double t0, double t1, int voxelsPerCell = 8) const;
+
+    const std::vector<KeyFrame>& keyFrames() const { return frames_; }
+
+private:
+    std::vector<KeyFrame> frames_;
+};
+
+}  // namespace brume
