@@ -54,7 +54,9 @@ TEST(RgbToSpectrum, SpectraAreSmoothAndBounded) {
     for (int i = 0; i < 81; ++i) {
         EXPECT_GE(s[i], 0.f);
         EXPECT_LE(s[i], 1.f);
-        if (i > 0) EXPECT_LT(std::abs(s[i] - s[i - 1]), .1f) << "band " << i;
+        if (i > 0) {
+            EXPECT_LT(std::abs(s[i] - s[i - 1]), .1f) << "band " << i;
+        }
     }
     EXPECT_GT(s[0], s[80]);  // red: more light at long wavelengths (band 0 is the longest)
 }
