@@ -17,6 +17,22 @@ struct MajorantSegment {
     double t0, t1, majorant;
 };
 
+// Calls f(t, majorant) at each tentative collision along `segments` (free flights of rate σ̄ in each, which
+// restart at each segment's start: exponential flights have no memory) until f returns false; returns whether
+// the walk got past the last segment.
+template <class Segments, class F>
+bool forEachTentativeCollision(const Segments& segments, Random& random, const F& f) {
+    for (const MajorantSegment& s : segments) {
+        if (!(s.majorant > 0)) continue;
+        for (double t = s.t0;;) {
+            t -= std::log1p(-random.uniform()) / s.majorant;
+            if (t >= s.t1) break;
+            if (!f(t, s.majorant)) return false;
+        }
+    }
+    return true;
+}
+
 // Ratio tracking (Novák, Selle and Jarosz 2014): the transmittance exp(−∫σ_t dt) over `segments` (in order
 // along the ray), estimated without bias as the product of (1 − σ_t/σ̄) at tentative collisions. Once every
 // band is below 0.1, Russian roulette ends it (0) or carries on with the estimate scaled up: deep smoke costs
@@ -24,22 +40,17 @@ struct MajorantSegment {
 template <class Segments, class Extinction>
 Spectrum ratioTracking(const Segments& segments, const Extinction& extinction, Random& random) {
     Spectrum transmittance(1.f);
-    for (const MajorantSegment& s : segments) {
-        if (!(s.majorant > 0)) continue;
-        for (double t = s.t0;;) {
-            t -= std::log1p(-random.uniform()) / s.majorant;
-            if (t >= s.t1) break;
-            Spectrum sigma = extinction(t);
-            for (int i = 0; i < transmittance.size(); ++i)
-                transmittance[i] *= std::max(0.f, 1 - float(sigma[i] / s.majorant));
-            float most = transmittance.maxValue();
-            if (most < 0.1f) {  // roulette: survive with the largest band's share, weight back up
-                if (random.uniform() >= most) return Spectrum(0.f, transmittance.size());
-                transmittance *= 1 / most;
-            }
-        }
-    }
-    return transmittance;
+    bool through = forEachTentativeCollision(segments, random, [&](double t, double majorant) {
+        Spectrum sigma = extinction(t);
+        for (int i = 0; i < transmittance.size(); ++i)
+            transmittance[i] *= std::max(0.f, 1 - float(sigma[i] / majorant));
+        float most = transmittance.maxValue();
+        if (most >= 0.1f) return true;
+        if (random.uniform() >= most) return false;  // roulette: survive with the largest band's share
+        transmittance *= 1 / most;
+        return true;
+    });
+    return through ? transmittance : Spectrum(0.f, transmittance.size());
 }
 
 // The first real collision of delta tracking (Woodcock et al. 1965) along `segments`, for a path whose bands
@@ -51,29 +62,26 @@ Spectrum ratioTracking(const Segments& segments, const Extinction& extinction, R
 template <class Segments, class Extinction>
 std::optional<double> deltaTracking(const Segments& segments, const Extinction& extinction, Spectrum& weight,
                                     Random& random) {
-    for (const MajorantSegment& s : segments) {
-        if (!(s.majorant > 0)) continue;
-        for (double t = s.t0;;) {
-            t -= std::log1p(-random.uniform()) / s.majorant;
-            if (t >= s.t1) break;
-            Spectrum sigma = extinction(t);
-            double real = 0, null = 0;
-            for (int i = 0; i < weight.size(); ++i) {
-                double a = std::abs(weight[i]), sigmaT = std::min(double(sigma[i]), s.majorant);
-                real += a * sigmaT, null += a * (s.majorant - sigmaT);
-            }
-            if (!(real + null > 0)) return std::nullopt;  // nothing left to carry
-            double pReal = real / (real + null);
-            bool isReal = random.uniform() < pReal;
-            double p = isReal ? pReal : 1 - pReal;
-            for (int i = 0; i < weight.size(); ++i) {
-                double sigmaT = std::min(double(sigma[i]), s.majorant);
-                weight[i] *= float((isReal ? sigmaT : s.majorant - sigmaT) / (s.majorant * p));
-            }
-            if (isReal) return t;
+    std::optional<double> collision;
+    forEachTentativeCollision(segments, random, [&](double t, double majorant) {
+        Spectrum sigma = extinction(t);
+        double real = 0, null = 0;
+        for (int i = 0; i < weight.size(); ++i) {
+            double a = std::abs(weight[i]), sigmaT = std::min(double(sigma[i]), majorant);
+            real += a * sigmaT, null += a * (majorant - sigmaT);
         }
-    }
-    return std::nullopt;
+        if (!(real + null > 0)) return false;  // nothing left to carry
+        double pReal = real / (real + null);
+        bool isReal = random.uniform() < pReal;
+        double p = isReal ? pReal : 1 - pReal;
+        for (int i = 0; i < weight.size(); ++i) {
+            double sigmaT = std::min(double(sigma[i]), majorant);
+            weight[i] *= float((isReal ? sigmaT : majorant - sigmaT) / (majorant * p));
+        }
+        if (isReal) collision = t;
+        return !isReal;
+    });
+    return collision;
 }
 
 }  // namespace brume
