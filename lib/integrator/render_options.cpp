@@ -88,22 +88,18 @@ void addColorOutputOptions(OptionTable& t, ColorOutput& o, bool values) {
         return std::string("RGB");  // spectral output: -co says so
     });
     t.add("-pc", 8, "output primaries: xr yr xg yg xb yb xw yw", [&o](const auto& a) {
-        const Primaries& r = kRadiancePrimaries;
-        const double radiance[8] = {r.red.x, r.red.y, r.green.x, r.green.y, r.blue.x, r.blue.y, r.white.x, r.white.y};
-        double v[8];
+        std::array<double, 8> v, radiance = coordinates(kRadiancePrimaries);
         bool standard = true;  // within Radiance's tolerance of its own
-        for (int i = 0; i < 8; ++i) {
-            v[i] = toReal("-pc", a[size_t(i)]);
+        for (size_t i = 0; i < 8; ++i) {
+            v[i] = toReal("-pc", a[i]);
             standard = standard && std::abs(v[i] - radiance[i]) <= .001;
         }
-        Primaries p{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+        Primaries p = primariesOf(v);
         if (!standard && !validPrimaries(p)) throw Error("illegal primary chromaticities");
         o.kind = Kind::Rgb, o.primaries = standard ? kRadiancePrimaries : p;
     }, [&o] {
-        const Primaries& p = o.primaries;
         std::string text;
-        for (double v : {p.red.x, p.red.y, p.green.x, p.green.y, p.blue.x, p.blue.y, p.white.x, p.white.y})
-            text += (text.empty() ? "" : " ") + formatReal(v);
+        for (double v : coordinates(o.primaries)) text += (text.empty() ? "" : " ") + formatReal(v);
         return text;
     });
     if (!values) return;

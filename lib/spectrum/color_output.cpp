@@ -49,9 +49,10 @@ std::vector<std::string> ColorOutput::headerLines() const {
 }
 
 std::string primariesLine(const Primaries& p) {
+    std::array<double, 8> v = coordinates(p);
     char line[160];
-    std::snprintf(line, sizeof line, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f", p.red.x, p.red.y, p.green.x,
-                  p.green.y, p.blue.x, p.blue.y, p.white.x, p.white.y);
+    std::snprintf(line, sizeof line, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f", v[0], v[1], v[2], v[3], v[4],
+                  v[5], v[6], v[7]);
     return line;
 }
 

@@ -1,7 +1,6 @@
 #include "spectrum/colorimetry.h"
 
 #include <cmath>
-#include <mutex>
 
 #include "spectrum/cie_tables.h"
 
@@ -102,17 +101,23 @@ Matrix3 xyzToRgb(const Primaries& p) {
     return inverse(rgbToXyz(p)) * adaptation(kRadiancePrimaries.white, p.white);
 }
 
-const ObserverWeights& observerWeights() {
-    static std::mutex mutex;
-    static ObserverWeights w{SpectralSampling{0, 0, 0}, {}, {}, {}, {}, {}, 1};
-    std::lock_guard lock(mutex);
-    const SpectralSampling& s = spectralSampling();
-    if (w.sampling == s) return w;
-    w = ObserverWeights{s, weights(cieX(), s), weights(cieY(), s), weights(cieZ(), s),
-                        weights(scotopicEfficiency(), s), weights(melanopicEfficiency(), s),
-                        daylightIntegral(cieY()) / daylightIntegral(melanopicEfficiency())};
+namespace {
+
+ObserverWeights weightsOf(const SpectralSampling& s) {
+    return {weights(cieX(), s), weights(cieY(), s), weights(cieZ(), s), weights(scotopicEfficiency(), s),
+            weights(melanopicEfficiency(), s), daylightIntegral(cieY()) / daylightIntegral(melanopicEfficiency())};
+}
+
+ObserverWeights& currentWeights() {
+    static ObserverWeights w = weightsOf(spectralSampling());
     return w;
 }
+
+}  // namespace
+
+const ObserverWeights& observerWeights() { return currentWeights(); }
+
+void remakeObserverWeights() { currentWeights() = weightsOf(spectralSampling()); }
 
 Color3 toXyz(const Spectrum& s) {
     if (s.size() == 3) return rgbToXyz(kRadiancePrimaries) * Color3{s[0], s[1], s[2]};

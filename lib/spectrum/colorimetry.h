@@ -24,6 +24,13 @@ struct Primaries {
     Chromaticity red, green, blue, white;
     bool operator==(const Primaries&) const = default;
 };
+// The eight numbers Radiance writes for primaries (-pc, PRIMARIES=): xr yr xg yg xb yb xw yw.
+inline std::array<double, 8> coordinates(const Primaries& p) {
+    return {p.red.x, p.red.y, p.green.x, p.green.y, p.blue.x, p.blue.y, p.white.x, p.white.y};
+}
+inline Primaries primariesOf(const std::array<double, 8>& v) {
+    return {{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+}
 // Radiance's standard primaries (color.h: nominal CRT primaries, equal-energy white).
 inline constexpr Primaries kRadiancePrimaries{{0.640, 0.330}, {0.290, 0.600}, {0.150, 0.060}, {1. / 3, 1. / 3}};
 // Whether p can be used (Radiance's colorprimsOK): chromaticities inside the unit triangle, a white not
@@ -40,15 +47,16 @@ Matrix3 rgbToXyz(const Primaries& p);
 // sensor space (Süsstrunk, Holm, Finlayson 2001), as Radiance's compxyz2rgbWBmat does.
 Matrix3 xyzToRgb(const Primaries& p);
 
-// Per band, the share of each observer curve's area that falls in it, for the sampling in effect (rebuilt
-// when the sampling changes; not to be called while another thread changes it).
+// Per band, the share of each observer curve's area that falls in it.
 struct ObserverWeights {
-    SpectralSampling sampling;
     std::vector<double> x, y, z, scotopic, melanopic;
     // Melanopic to melanopic-equivalent daylight (D65) value: ∫ȳ D65 / ∫s_mel D65, the curves normalised.
     double melanopicToDaylight = 1;
 };
+// The weights of the sampling in effect, read without a lock on every value written: setSpectralSampling
+// remakes them (before any thread renders), the first call makes those of RGB.
 const ObserverWeights& observerWeights();
+void remakeObserverWeights();
 
 Color3 toXyz(const Spectrum& s);
 // RGB in primaries p; out-of-gamut negatives desaturated toward the grey of equal Y (Radiance's clipgamut

@@ -48,6 +48,7 @@ void setSpectralSampling(SpectralSampling s) {
         throw Error("-cw " + nm(s.shortest) + " " + nm(s.longest) +
                     ": the spectral range must span 50 nm or more within 200 to 2000 nm");
     gSampling = s;
+    remakeObserverWeights();
     if (s.isRgb()) {
         Spectrum::setDefaultChannels(3);
         return;
