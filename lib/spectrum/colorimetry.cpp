@@ -1,6 +1,8 @@
 #include "spectrum/colorimetry.h"
 
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 #include "spectrum/cie_tables.h"
 
@@ -108,19 +110,30 @@ ObserverWeights weightsOf(const SpectralSampling& s) {
             weights(melanopicEfficiency(), s), daylightIntegral(cieY()) / daylightIntegral(melanopicEfficiency())};
 }
 
-ObserverWeights& currentWeights() {
-    static ObserverWeights w = weightsOf(spectralSampling());
-    return w;
-}
+std::once_flag gMade;
+std::atomic<bool> gAreMade{false};
+ObserverWeights gWeights;
 
 }  // namespace
 
-const ObserverWeights& observerWeights() { return currentWeights(); }
+const ObserverWeights& observerWeights() {
+    std::call_once(gMade, [] {
+        gWeights = weightsOf(spectralSampling());
+        gAreMade = true;
+    });
+    return gWeights;
+}
 
-void remakeObserverWeights() { currentWeights() = weightsOf(spectralSampling()); }
+// RGB runs rarely need the weights (scotopic and melanopic outputs): their first use makes them, and spares
+// the others parsing the CIE tables.
+void remakeObserverWeights() {
+    if (gAreMade) gWeights = weightsOf(spectralSampling());
+    else if (!spectralSampling().isRgb()) observerWeights();
+}
 
 Color3 toXyz(const Spectrum& s) {
-    if (s.size() == 3) return rgbToXyz(kRadiancePrimaries) * Color3{s[0], s[1], s[2]};
+    static const Matrix3 radianceToXyz = rgbToXyz(kRadiancePrimaries);
+    if (s.size() == 3) return radianceToXyz * Color3{s[0], s[1], s[2]};
     const ObserverWeights& w = observerWeights();
     return {dot(w.x, s), dot(w.y, s), dot(w.z, s)};
 }
@@ -131,7 +144,9 @@ Color3 toRgb(const Spectrum& s, const Primaries& p) {
 }
 
 Color3 xyzToClippedRgb(const Color3& xyz, const Primaries& p) {
-    Color3 rgb = xyzToRgb(p) * xyz;
+    // Radiance's own primaries convert every value written in bands: their matrix is made once.
+    static const Matrix3 xyzToRadiance = xyzToRgb(kRadiancePrimaries);
+    Color3 rgb = (p == kRadiancePrimaries ? xyzToRadiance : xyzToRgb(p)) * xyz;
     double y = xyz[1];
     if (y < 0) return {0, 0, 0};
     double keep = 1;  // of the colour's difference from its grey, just enough to bring negatives to 0

@@ -54,7 +54,7 @@ struct ObserverWeights {
     double melanopicToDaylight = 1;
 };
 // The weights of the sampling in effect, read without a lock on every value written: setSpectralSampling
-// remakes them (before any thread renders), the first call makes those of RGB.
+// remakes them (before any thread renders); made on first use otherwise.
 const ObserverWeights& observerWeights();
 void remakeObserverWeights();
 
