@@ -34,7 +34,7 @@ public:
         : integrator_(integrator), view_(view), s_(s), progress_(progress), w_(s.xres), h_(s.yres) {
         values_.width = w_, values_.height = h_, values_.channels = c_;
         values_.values.assign(size_t(w_) * h_ * c_, 0.f);
-        colours_.assign(size_t(w_) * h_ * 3, 0.f);
+        if (c_ > 3) colours_.assign(size_t(w_) * h_ * 3, 0.f);
         depth_.assign(size_t(w_) * h_, 0.f);
         traced_.assign(size_t(w_) * h_, 0);
     }
@@ -60,8 +60,8 @@ private:
     size_t at(int x, int row) const { return size_t(row) * w_ + x; }
     float* pixel(int x, int row) { return values_.at(x, row); }
     // A traced pixel's RGB: what the first pass compares (bands would differ more often than the colour
-    // seen, the more of them there are).
-    float* colour(int x, int row) { return &colours_[3 * at(x, row)]; }
+    // seen, the more of them there are). In RGB, the pixel itself.
+    float* colour(int x, int row) { return c_ > 3 ? &colours_[3 * at(x, row)] : pixel(x, row); }
 
     // The three channels -pRGB, -pXYZ or -pc ask for (Radiance's rpict writes XYZ × 179, as rtrace does).
     Picture picture() const {
@@ -96,8 +96,10 @@ private:
                             ? integrator_.irradianceAtHit(ray->org, ray->dir, index)
                             : integrator_.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);
         for (int c = 0; c < c_; ++c) pixel(x, row)[c] = rec.value[c];
-        Color3 rgb = toRgb(rec.value);
-        std::copy(rgb.begin(), rgb.end(), colour(x, row));
+        if (c_ > 3) {
+            Color3 rgb = toRgb(rec.value);
+            std::copy(rgb.begin(), rgb.end(), colour(x, row));
+        }
         // Radiance's ray distance: the mirror image's when the mirrored light dominates, else the effective one.
         bool mirrored = brightness(rec.mirrored) > 0.5f * brightness(rec.value);
         double d = mirrored ? rec.mirroredLength : rec.effectiveLength;
@@ -191,7 +193,7 @@ private:
     static constexpr int kBand = 32;  // rows traced together
     int w_, h_, c_ = Spectrum::defaultChannels();
     PixelSpectra values_;
-    std::vector<float> colours_;
+    std::vector<float> colours_;  // with bands: each traced pixel's RGB
     std::vector<float> depth_;
     std::vector<char> traced_;
     std::vector<int> xs_, ys_;  // the first pass's columns and rows
