@@ -434,3 +434,10 @@ TEST_F(RtraceCli, CacheFilesKeepTheirSpectralSampling) {
     EXPECT_NE(bands.status, 0);
     EXPECT_NE(bands.err.find("-cs 3 (now -cs 41)"), std::string::npos) << bands.err;
 }
+
+TEST_F(RtraceCli, IllegalPrimariesAreRefused) {
+    Output r = rtrace("-pc .64 .33 .64 .33 .15 .06 .3127 .329 s.rad", "0 0 1 0 0 -1\n");
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.out, "");
+    EXPECT_NE(r.err.find("illegal primary chromaticities"), std::string::npos) << r.err;
+}

@@ -144,3 +144,18 @@ TEST(Spectral, PhotopicAndMelanopicOfANarrowBandByHand) {
     EXPECT_NEAR(v[27], 1, 1e-6);  // band 27: 510–500 nm
     EXPECT_NEAR(v[26], 0.25, 1e-6);
 }
+
+// Bad spectral patterns are refused with the file, line and what is wrong.
+TEST(Spectral, BadSpectralPatternsAreRefused) {
+    SpectralSamplingScope bands(41);
+    auto error = [](const std::string& pattern) {
+        return renderSceneError(pattern + "p plastic m 0 0 5 .5 .5 .5 0 0\nm sphere s 0 0 4 0 0 0 1\n");
+    };
+    EXPECT_NE(error("void spectrum p 0 0 4 400 700 1 1\n").find("test.rad:1: bad arguments for spectrum \"p\""),
+              std::string::npos);
+    EXPECT_NE(error("void spectrum p 0 0 5 500 500 1 1 1\n").find("must differ"), std::string::npos);
+    EXPECT_NE(error("void specfunc p 2 f . 0 2 900 1000\n").find("outside the spectral range"), std::string::npos);
+    EXPECT_NE(error("void specfile p 1 no_such_file.dat 0 0\n").find("no_such_file.dat"), std::string::npos);
+    EXPECT_NE(error("void specpict p 5 f no_such.hsr . u v 0 0\n").find("cannot find hyperspectral picture"),
+              std::string::npos);
+}

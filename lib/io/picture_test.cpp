@@ -185,4 +185,10 @@ TEST(HyperspectralPicture, ReadsWhatRadianceWrote) {
     EXPECT_THROW(readHyperspectralPicture(truncated, "t.hsr"), Error);
     std::istringstream rgbe("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n");
     EXPECT_THROW(readHyperspectralPicture(rgbe, "p.hdr"), Error);
+    for (const char* header : {"NCOMP=3\nWAVELENGTH_SPLITS= 700 588 480 400\n", "NCOMP=6\n",
+                               "NCOMP=6\nWAVELENGTH_SPLITS= 700 588 480 700\n", "NCOMP=6\nWAVELENGTH_SPLITS= 1e300 1 1 400\n"}) {
+        std::istringstream bad("#?RADIANCE\n" + std::string(header) + "FORMAT=Radiance_spectra\n\n-Y 2 +X 2\n" +
+                               std::string(28, '\x80'));
+        EXPECT_THROW(readHyperspectralPicture(bad, "b.hsr"), Error) << header;
+    }
 }
