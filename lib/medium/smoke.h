@@ -1,0 +1,51 @@
+// The `smoke` scene object: a density grid from OpenVDB files (one, or key frames in time) turned into a
+// participating medium: extinction per unit density (K_m for soot in kg/m³), scattering albedo, Henyey–Greenstein g.
+#pragma once
+#include <memory>
+
+#include "medium/grid_sequence.h"
+#include "medium/majorant_grid.h"
+#include "scene/scene.h"
+#include "spectrum/spectrum.h"
+
+namespace brume {
+
+// What a `smoke` object says, read once per scene.
+struct SmokeDescription {
+    std::shared_ptr<const GridSequence> frames;
+    Spectrum extinctionPerDensity;  // σ_t per unit density, per band of the current spectral sampling
+    Spectrum albedo;                // σ_s / σ_t
+    double g = 0;                   // Henyey–Greenstein mean cosine (> 0 forward)
+};
+
+// Reads a `smoke` object's arguments (see rtrace(1), "Smoke") and loads its grids. Throws Error "file:line: …".
+SmokeDescription readSmoke(const SceneObject& object);
+
+// The smoke at one instant of the scene: what rays are tracked through. Thread-safe const members.
+class SmokeVolume {
+public:
+    SmokeVolume(const SmokeDescription& smoke, double time);
+
+    // Where the density can be non-zero.
+    const Bounds3& bounds() const { return bounds_; }
+    double density(const dvec3& p) const;
+    // σ_t at p, per band.
+    Spectrum extinction(const dvec3& p) const { return description_.extinctionPerDensity * float(density(p)); }
+    const Spectrum& albedo() const { return description_.albedo; }
+    double g() const { return description_.g; }
+    // Calls f(t0, t1, majorant) -> bool for consecutive stretches of [tmin, tmax] along the ray inside the
+    // volume, where majorant ≥ σ_t in every band (0 where there is no smoke); false from f stops the walk.
+    template <typename F>
+    void forEachSegment(const Ray& ray, double tmin, double tmax, F&& f) const {
+        majorant_.forEachSegment(ray, tmin, tmax, [&](double t0, double t1, double m) { return f(t0, t1, m * scale_); });
+    }
+
+private:
+    SmokeDescription description_;
+    double time_;
+    MajorantGrid majorant_;
+    Bounds3 bounds_;
+    double scale_;  // the largest band of extinctionPerDensity
+};
+
+}  // namespace brume
