@@ -25,6 +25,8 @@ public:
     RayPathDir& operator=(const RayPathDir&) = delete;
 
     void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
+    // Where to write files of other kinds.
+    const std::filesystem::path& path() const { return dir_; }
 
 private:
     std::filesystem::path dir_;

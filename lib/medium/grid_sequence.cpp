@@ -1,18 +1,18 @@
 #include "medium/grid_sequence.h"
 
 #include <algorithm>
-#include <string>
+#include <sstream>
 
 #include "util/error.h"
 
 namespace brume {
 
 GridSequence::GridSequence(std::vector<KeyFrame> frames) : frames_(std::move(frames)) {
-    if (frames_.empty()) throw Error("grid sequence: no key frame");
+    if (frames_.empty()) throw Error("no key frame");
     std::ranges::stable_sort(frames_, {}, &KeyFrame::time);
     for (std::size_t i = 1; i < frames_.size(); ++i)
         if (frames_[i].time == frames_[i - 1].time)
-            throw Error("grid sequence: two key frames at time " + std::to_string(frames_[i].time) + " s");
+            throw Error("two key frames at time " + (std::ostringstream() << frames_[i].time).str() + " s");
 }
 
 double GridSequence::density(const dvec3& p, double time) const {

@@ -15,7 +15,8 @@ struct KeyFrame {
 
 class GridSequence {
 public:
-    // Frames in any order (they are sorted by time); Error if there is none or two share a time.
+    // Frames in any order (they are sorted by time); Error if there is none or two share a time (the
+    // message names no source: the caller says whose frames they are).
     explicit GridSequence(std::vector<KeyFrame> frames);
 
     // Linear in time between the key frames around `time`; the first or last frame's density outside them.

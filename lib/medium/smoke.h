@@ -18,7 +18,10 @@ struct SmokeDescription {
     double g = 0;                   // Henyey–Greenstein mean cosine (> 0 forward)
 };
 
-// Reads a `smoke` object's arguments (see rtrace(1), "Smoke") and loads its grids. Throws Error "file:line: …".
+// Reads a `smoke` object's arguments (see rtrace(1), "Smoke") and loads its grids, found along RAYPATH:
+//   N [density=GRID] file.vdb | N [density=GRID] t1 file1.vdb t2 file2.vdb …   0   3|6|7 K K K [a a a [g]]
+// A single file is static; key-frame times are the ones written (metadata such as FDS's fds_time_s is not
+// read). Throws Error "file:line: bad smoke 'id': …".
 SmokeDescription readSmoke(const SceneObject& object);
 
 // The smoke at one instant of the scene: what rays are tracked through. Thread-safe const members.
@@ -26,7 +29,7 @@ class SmokeVolume {
 public:
     SmokeVolume(const SmokeDescription& smoke, double time);
 
-    // Where the density can be non-zero.
+    // Where the density can be non-zero at some time (all key frames); empty for empty grids.
     const Bounds3& bounds() const { return bounds_; }
     double density(const dvec3& p) const;
     // σ_t at p, per band.

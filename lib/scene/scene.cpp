@@ -25,10 +25,10 @@ size_t modifierStrings(const SceneObject& object) {
 }  // namespace
 
 bool isModifierType(std::string_view type) {
-    // Radiance's T_S (surface) and T_V (volume) types, from its otypes.h.
+    // Radiance's T_S (surface) and T_V (volume) types, from its otypes.h, and Brume's smoke (a volume).
     static constexpr std::string_view kNotModifiers[] = {"polygon", "cone",  "sphere", "ring",
                                                          "cylinder", "cup",  "bubble", "tube",
-                                                         "source",   "instance", "mesh"};
+                                                         "source",   "instance", "mesh", "smoke"};
     return std::find(std::begin(kNotModifiers), std::end(kNotModifiers), type) == std::end(kNotModifiers);
 }
 

@@ -28,8 +28,8 @@ struct SceneObject {
 };
 
 // Whether objects of this type may modify others. Radiance's surfaces (polygon, sphere, source, ...) and
-// volumes (instance, mesh) may not, so they never shadow a modifier of the same name; every other type,
-// including ones unknown here, may.
+// volumes (instance, mesh), and Brume's smoke, may not, so they never shadow a modifier of the same name;
+// every other type, including ones unknown here, may.
 bool isModifierType(std::string_view type);
 
 // The bounding cube oconv stored in an octree; rtrace scales some parameters (-ar) by its size.

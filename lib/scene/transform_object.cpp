@@ -13,7 +13,7 @@ namespace {
 // What xform does to the arguments of each type Radiance knows (its otypes.h).
 enum class Rule {
     Keep, AppendTransform, Source, Sphere, Polygon, Cone, Cylinder, Ring, Glow, Spotlight, Dielectric,
-    Interface, Mist, Text
+    Interface, Mist, Text, Smoke
 };
 
 std::optional<Rule> ruleOf(std::string_view type) {
@@ -23,7 +23,7 @@ std::optional<Rule> ruleOf(std::string_view type) {
             {"source", Source}, {"sphere", Sphere}, {"bubble", Sphere}, {"polygon", Polygon}, {"cone", Cone},
             {"cup", Cone}, {"cylinder", Cylinder}, {"tube", Cylinder}, {"ring", Ring}, {"glow", Glow},
             {"spotlight", Spotlight}, {"dielectric", Dielectric}, {"interface", Interface}, {"mist", Mist},
-            {"brighttext", Text}, {"colortext", Text}, {"mixtext", Text}};
+            {"smoke", Smoke}, {"brighttext", Text}, {"colortext", Text}, {"mixtext", Text}};
         // Octrees and meshes, and every type with functions: they take the transform with them.
         for (std::string_view t : {"instance", "mesh", "texfunc", "texdata", "plastic2", "metal2", "trans2",
                                    "plasfunc", "metfunc", "transfunc", "BRTDfunc", "BSDF", "aBSDF", "WGMDfunc",
@@ -56,6 +56,10 @@ std::string misfit(const SceneObject& o, Rule rule) {
     // Radiance writes a broken object for 1 or 2 reals; its manual allows 0, 3, 6 or 7.
     case Rule::Mist: return n == 0 || (n >= 3 && n <= 7) ? "" : "expected 0 or 3 to 7 reals";
     case Rule::Text: return n >= 9 ? "" : "expected at least 9 reals";
+    case Rule::Smoke:
+        return !o.strings.empty() && o.integers.empty() && (n == 3 || n == 6 || n == 7)
+                   ? ""
+                   : "expected files, no integers and 3, 6 or 7 reals";
     default: return "";
     }
 }
@@ -128,6 +132,10 @@ void transformArguments(SceneObject& o, Rule rule, const ObjectTransform& how) {
             for (std::string& name : o.strings) name = prefixedSources(name, how.prefix);
         break;
     case Rule::Text: movePoint(r, 0, t), turnVector(r, 3, t), turnVector(r, 6, t); break;  // anchor, right, down
+    // Placed by its grids' own transforms, which xform would have to rewrite (or carry) to move it.
+    case Rule::Smoke:
+        if (t.matrix != glm::dmat4(1.0)) throw Error(o.where, "cannot transform smoke '" + o.name + "' yet");
+        break;
     }
 }
 

@@ -206,6 +206,19 @@ TEST(TransformObject, UnknownTypesAndMisfitArgumentsAreErrorsAtTheirLine) {
     EXPECT_EQ(errorOf("\nm sphere s 1 x 0 4 0 0 0 1"), "t.rad:2: bad sphere 's': expected no strings and 4 reals");
     EXPECT_EQ(errorOf("void mist f 0 0 2 .1 .1"), "t.rad:1: bad mist 'f': expected 0 or 3 to 7 reals");
     EXPECT_EQ(errorOf("void colortext t 1 x 0 3 0 0 0"), "t.rad:1: bad colortext 't': expected at least 9 reals");
+    EXPECT_EQ(errorOf("void smoke s 0 0 3 1 1 1"),
+              "t.rad:1: bad smoke 's': expected files, no integers and 3, 6 or 7 reals");
+}
+
+TEST(TransformObject, SmokeIsRenamedButNotMovedItsGridsPlaceIt) {
+    ObjectTransform how;
+    how.prefix = "copy";
+    how.modifier = "soot";
+    ObjectText smoke = transformed("void smoke s 1 room.vdb 0 3 8700 8700 8700", {"-t", "0", "0", "0"}, how);
+    EXPECT_EQ(smoke.object.name, "copy.s");
+    EXPECT_EQ(smoke.modifier, "soot");
+    EXPECT_EQ(smoke.object.strings, std::vector<std::string>{"room.vdb"});
+    EXPECT_EQ(errorOf("void smoke s 1 room.vdb 0 3 1 1 1"), "t.rad:1: cannot transform smoke 's' yet");
 }
 
 }  // namespace

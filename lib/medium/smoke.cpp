@@ -1,0 +1,89 @@
+#include "medium/smoke.h"
+
+#include <charconv>
+#include <cmath>
+#include <span>
+
+#include "scene/raypath.h"
+#include "spectrum/rgb_to_spectrum.h"
+
+namespace brume {
+
+namespace {
+
+[[noreturn]] void badSmoke(const SceneObject& o, const std::string& why) {
+    throw Error(o.where, "bad smoke '" + o.name + "': " + why);
+}
+
+DensityGrid loadGrid(const SceneObject& o, const std::string& name, const std::string& gridName) {
+    const std::string path = findOnRayPath(name);
+    if (path.empty()) badSmoke(o, "cannot find VDB file \"" + name + "\"");
+    try {
+        return DensityGrid(path, gridName);
+    } catch (const Error& e) {
+        badSmoke(o, e.what());
+    }
+}
+
+double keyFrameTime(const SceneObject& o, const std::string& word) {
+    double t = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), t);
+    if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(t))
+        badSmoke(o, "bad key-frame time '" + word + "'");
+    return t;
+}
+
+// The strings: [density=NAME] then one file (static smoke), or pairs of a time and a file.
+std::shared_ptr<const GridSequence> readFrames(const SceneObject& o) {
+    std::span<const std::string> words = o.strings;
+    std::string gridName = "density";
+    if (!words.empty() && words[0].starts_with("density=")) {
+        gridName = words[0].substr(std::string_view("density=").size());
+        if (gridName.empty()) badSmoke(o, "empty grid name in 'density='");
+        words = words.subspan(1);
+    }
+    if (words.empty() || (words.size() > 1 && words.size() % 2 != 0))
+        badSmoke(o, "expected [density=NAME] then one file, or key frames as time and file pairs");
+    std::vector<KeyFrame> frames;
+    if (words.size() == 1) frames.push_back({0, loadGrid(o, words[0], gridName)});
+    else
+        for (std::size_t i = 0; i < words.size(); i += 2)
+            frames.push_back({keyFrameTime(o, words[i]), loadGrid(o, words[i + 1], gridName)});
+    try {
+        return std::make_shared<const GridSequence>(std::move(frames));
+    } catch (const Error& e) {
+        badSmoke(o, e.what());
+    }
+}
+
+}  // namespace
+
+SmokeDescription readSmoke(const SceneObject& o) {
+    if (!o.integers.empty()) badSmoke(o, "expected no integers");
+    const std::vector<double>& r = o.reals;
+    if (r.size() != 3 && r.size() != 6 && r.size() != 7) badSmoke(o, "expected 3, 6 or 7 reals");
+    if (r[0] < 0 || r[1] < 0 || r[2] < 0) badSmoke(o, "extinction per unit density must not be negative");
+    for (std::size_t i = 3; i < 6 && i < r.size(); ++i)
+        if (!(r[i] >= 0 && r[i] <= 1)) badSmoke(o, "albedo must be between 0 and 1");
+    const double g = r.size() == 7 ? r[6] : 0;
+    if (!(std::abs(g) < 1)) badSmoke(o, "g must be strictly between -1 and 1");
+    SmokeDescription smoke;
+    smoke.extinctionPerDensity = spectrumFromRgb(r[0], r[1], r[2]);
+    smoke.albedo = r.size() >= 6 ? spectrumFromRgb(r[3], r[4], r[5]) : Spectrum(0.f);
+    smoke.g = g;
+    smoke.frames = readFrames(o);  // last: the arguments are checked before any file is read
+    return smoke;
+}
+
+SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time)
+    : description_(smoke),
+      time_(time),
+      majorant_(smoke.frames->majorant(time, time)),
+      bounds_(smoke.frames->bounds()),
+      // One float ulp above the largest band: extinction() rounds K·ρ to float, which may exceed K·ρ by
+      // half an ulp, and the majorant must still bound it.
+      scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)) {}
+
+double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
+
+}  // namespace brume
