@@ -148,6 +148,12 @@ TEST(SceneReader, ModifierRefersToTheLatestDefinition) {
     EXPECT_EQ(scene.findModifier("m"), 2);
 }
 
+TEST(SceneReader, VolumesNeverShadowAModifierOfTheirName) {
+    Scene scene = parse("void plastic m 0 0 0\nvoid smoke m 1 m.vdb 0 3 1 1 1\nvoid instance m 1 m.oct 0 0\n"
+                        "m sphere s 0 0 4 0 0 0 1\n");
+    EXPECT_EQ(scene.objects[3].modifier, 0);
+}
+
 TEST(SceneReader, IdenticalRedefinitionKeepsTheFirstAsInRadiance) {
     Scene scene = parse("void plastic m 0 0 5 .5 .5 .5 0 0\nvoid plastic m 0 0 5 .5 .5 .5000000001 0 0\n"
                         "m sphere s 0 0 4 0 0 0 1\n");
