@@ -158,11 +158,11 @@ TEST_F(RtraceCli, DamagedMeshFilesAreErrors) {
 }
 
 TEST_F(RtraceCli, PlannedTypesAreRefusedByName) {
-    writeScene("medium.rad", "void mist m 0 0 0\nm sphere s 0 0 4 0 0 0 1\n");
-    Output r = rtrace("medium.rad", "");
+    writeScene("prism.rad", "void interface m 0 0 8 1 1 1 1.5 1 1 1 1\nm sphere s 0 0 4 0 0 0 1\n");
+    Output r = rtrace("prism.rad", "");
     EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("mist"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("medium.rad:1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("interface"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("prism.rad:1"), std::string::npos) << r.err;
 }
 
 // -om names the surface's own modifier, -oM the material its chain of patterns ends in.
@@ -371,7 +371,7 @@ TEST_F(RtraceCli, DistanceLimitAndBinaryInput) {
 
 // Options of later work are refused by name, not ignored.
 TEST_F(RtraceCli, OptionsNotSupportedYetAreRefusedByName) {
-    for (const char* opt : {"-ae mod", "-me .1 .1 .1", "-ti mod"}) {
+    for (const char* opt : {"-ae mod", "-ai mod", "-ti mod"}) {
         Output r = rtrace(std::string(opt) + " s.rad", "0 0 1 0 0 -1\n");
         EXPECT_NE(r.status, 0) << opt;
         EXPECT_EQ(r.out, "") << opt;

@@ -124,7 +124,7 @@ void Integrator::makeRecords(const std::vector<RecordRequest>& requests) const {
 IrradianceRecord Integrator::computeRecord(const RecordRequest& q, CacheVisit& visit) const {
     Context ctx{Random(seedFor(q.key), q.key), nullptr, 0, &visit};
     HemisphereSamples samples(q.point, q.normal, recordDivisions(q), Spectrum::defaultChannels());
-    PathState child;
+    PathState child = startingAt(q.point);
     child.kind = PathState::Kind::Sampled;
     child.ambientLevel = q.level + 1;
     child.reflections = q.level + 1;

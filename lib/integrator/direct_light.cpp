@@ -131,9 +131,10 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
         Ray shadow{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface};
         float weight = float(1 / (s->pdf * count));
         Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), s->distance, scene_);
-        if (seen == Occlusion::Unsure) {
+        if (seen == Occlusion::Unsure || (seen == Occlusion::Clear && hasMedia_)) {
             const Spectrum& le = sourceRadiance(light, *s, sh.point, scratch);
-            Spectrum t = shadowTransmittance(shadow, light, state, ctx);
+            Spectrum t = seen == Occlusion::Unsure ? shadowTransmittance(shadow, light, state, ctx)
+                                                   : clearTransmittance(shadow, s->distance, state, ctx);
             if (record) recordShadowRay(ctx, sh.point, *s, light, le * t);
             sum.addProduct(f * t, le, weight);
             if (controlled) {
@@ -273,6 +274,7 @@ Spectrum Integrator::directViaMirrors(const Shading& sh, const Lobes& lobes, con
                                                                                     s->distance - toMirror, scene_);
                 if (seen == Occlusion::Blocked) continue;
                 if (seen == Occlusion::Unsure) t *= shadowTransmittance(onward, light, crossing, ctx);
+                else if (hasMedia_) t *= clearTransmittance(onward, s->distance - toMirror, crossing, ctx);
                 if (!t.isBlack())
                     sum += f * sourceRadiance(light, *s, image, scratch) * mirror.reflectance * t * float(1 / (s->pdf * count));
             }
@@ -294,6 +296,11 @@ Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfi
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
+        if (hasMedia_) {
+            t *= mediaTransmittance(ray, 0, hit ? hit->t : ray.tmax,
+                                    homogeneousAlong(ray, hit ? &*hit : nullptr, state), ctx);
+            if (t.isBlack()) return t;
+        }
         if (!hit) return toInfinity ? t : Spectrum(0.f);
         // The source itself: its pattern is the caller's (sourceRadiance), only its material matters here,
         // so the shading most shadow rays end on is skipped.
@@ -301,8 +308,9 @@ Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfi
         Shading sh;
         if (!onTarget) sh = shadingAt(ray, *hit, false, scene_.objectFrame(hit->surface));
         int mat = onTarget ? scene_.materialObject(target) : shaderAt(ray, *hit, sh, ctx);
-        bool cut = mat < 0 || (state.clipCount > 0 && clipped(mat, state)) ||
-                   crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state);
+        bool cut = mat < 0 || (state.clips.count > 0 && clipped(mat, state)) ||
+                   crossesAntimatter(mat, glm::dot(hit->normal, ray.dir) > 0, state) ||
+                   crossesMist(mat, glm::dot(hit->normal, ray.dir) > 0, state);
         if (cut) {
             ray.org = hit->point;
             ray.leaving = hit->surface;

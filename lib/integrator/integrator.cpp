@@ -29,6 +29,14 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
     if (!cache_) cache_ = makeCache(scene, settings);
     const Spectrum& av = settings.ambientValue;
     if (av.size() == 3) settings_.ambientValue = spectrumFromRgb(av[0], av[1], av[2]);
+    const HomogeneousMedium& m = settings.medium;
+    global_.extinction = spectrumFromRgb(m.extinction[0], m.extinction[1], m.extinction[2]);
+    global_.albedo = spectrumFromRgb(m.albedo[0], m.albedo[1], m.albedo[2]);
+    global_.g = m.g;
+    std::vector<SmokeVolume> smoke;
+    for (const SmokeDescription& d : scene.smoke()) smoke.emplace_back(d, settings.time.value_or(0));
+    media_ = ParticipatingMedia(std::move(smoke));
+    hasMedia_ = !global_.clear() || scene.hasMists() || media_.hasSmoke();
 }
 
 Integrator::~Integrator() = default;
@@ -56,7 +64,7 @@ RayRecord Integrator::trace(const dvec3& org, const dvec3& dir, uint64_t index, 
     Ray ray{org, glm::normalize(dir)};
     if (maxDistance > 0) ray.tmax = maxDistance;
     ray.tmin = primaryTmin(org);
-    rec.value = radiance(ray, PathState{}, ctx, &rec, nullptr);
+    rec.value = radiance(ray, startingAt(org), ctx, &rec, nullptr);
     return rec;
 }
 
@@ -99,14 +107,14 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
         const Emitter* e = mat >= 0 ? scene_.emitter(mat) : nullptr;
         auto isTransparent = [&](int m) {
             const std::string& type = scene_.scene().objects[m].type;
-            return type == "glass" || type == "trans" || type == "trans2" || type == "dielectric";
+            return type == "glass" || type == "trans" || type == "trans2" || type == "dielectric" || type == "mist";
         };
         // An illum is seen as its alternate material, or not at all.
         bool transparent = hit && (mat < 0 || (e && e->kind == Emitter::Kind::Illum
                                                    ? e->alternate < 0 || isTransparent(e->alternate)
                                                    : isTransparent(mat)));
         if (!hit || (e && !transparent)) {
-            rec.value = radiance(ray, PathState{}, ctx, nullptr, nullptr);
+            rec.value = radiance(ray, startingAt(org), ctx, nullptr, nullptr);
             return rec;
         }
         if (!transparent) {
@@ -118,10 +126,39 @@ RayRecord Integrator::irradianceAtHit(const dvec3& org, const dvec3& dir, uint64
     return rec;
 }
 
+// The state of a path starting at p: in the mists around p. Radiance knows a ray is in a mist only once it
+// crosses the boundary; here a probe ray's first crossing of each mist's boundary tells, by the side it
+// meets, whether p is inside. The last point asked about is remembered per thread (a picture's eye).
+Integrator::PathState Integrator::startingAt(const dvec3& p) const {
+    PathState state;
+    if (!scene_.hasMists()) return state;
+    thread_local uint64_t owner = 0;
+    thread_local dvec3 last;
+    thread_local InsideVolumes around;
+    if (owner == id_ && last == p) {
+        state.mists = around;
+        return state;
+    }
+    InsideVolumes met;
+    Ray probe{p, glm::normalize(dvec3(0.2113, 0.5774, 0.7887))};  // off the axes, so rarely along a face
+    for (int crossing = 0; crossing < 16 * kMaxCrossings; ++crossing) {
+        auto hit = scene_.geometry().intersect(probe);
+        if (!hit) break;
+        int m = scene_.materialObject(hit->surface);
+        if (m >= 0 && scene_.mist(m) && !met.contains(m)) {
+            met.enter(m);
+            if (glm::dot(hit->normal, probe.dir) > 0) state.mists.enter(m);
+        }
+        probe = Ray{hit->point, probe.dir, std::numeric_limits<double>::infinity(), hit->surface};
+    }
+    owner = id_, last = p, around = state.mists;
+    return state;
+}
+
 // Whether the modifier is cut away by an antimatter volume the ray is in.
 bool Integrator::clipped(int modifier, const PathState& state) const {
-    for (int i = 0; i < state.clipCount; ++i) {
-        const std::vector<int>& cut = *scene_.clippedModifiers(state.clips[i]);
+    for (int i = 0; i < state.clips.count; ++i) {
+        const std::vector<int>& cut = *scene_.clippedModifiers(state.clips.objects[i]);
         if (std::find(cut.begin(), cut.end(), modifier) != cut.end()) return true;
     }
     return false;
@@ -130,8 +167,16 @@ bool Integrator::clipped(int modifier, const PathState& state) const {
 // Antimatter surfaces are invisible; crossing one enters or leaves its volume (it faces outward).
 bool Integrator::crossesAntimatter(int mat, bool backside, PathState& state) const {
     if (!scene_.clippedModifiers(mat)) return false;
-    if (backside) state.leaves(mat);
-    else state.enters(mat);
+    if (backside) state.clips.leave(mat);
+    else state.clips.enter(mat);
+    return true;
+}
+
+// A mist's surfaces are not seen: crossing one enters or leaves its volume (it faces outward).
+bool Integrator::crossesMist(int mat, bool backside, PathState& state) const {
+    if (!scene_.mist(mat)) return false;
+    if (backside) state.mists.leave(mat);
+    else state.mists.enter(mat);
     return true;
 }
 
@@ -143,7 +188,7 @@ Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const 
     Lobes lobes;
     lobes.diffuse = lobes.ambient = Spectrum(float(kPi));
     ctx.depth = ctx.tree ? 1 : 0;
-    Spectrum value = shade(sh, lobes, surface, PathState{}, ctx, nullptr);
+    Spectrum value = shade(sh, lobes, surface, startingAt(point), ctx, nullptr);
     if (ctx.tree) {
         rec.value = value;
         ctx.tree->rays.push_back({0, sh.point, dir, rec});
@@ -169,6 +214,17 @@ Spectrum Integrator::radiance(const Ray& ray, const PathState& state, Context& c
 Spectrum Integrator::radianceAlong(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                                    Spectrum* misEmission) const {
     auto hit = scene_.geometry().intersect(ray);
+    if (hasMedia_) {
+        HomogeneousMedium h = homogeneousAlong(ray, hit ? &*hit : nullptr, state);
+        if (!h.clear() || media_.smokeAlong(ray, 0, hit ? hit->t : ray.tmax))
+            return throughMedia(ray, hit, h, state, ctx, record, misEmission);
+    }
+    return surfaceRadiance(ray, hit, state, ctx, record, misEmission);
+}
+
+// The radiance of what the ray meets, a surface or, past them all, sources at infinity.
+Spectrum Integrator::surfaceRadiance(const Ray& ray, const std::optional<SurfaceHit>& hit, const PathState& state,
+                                     Context& ctx, RayRecord* record, Spectrum* misEmission) const {
     if (!hit) return escaped(ray, state, record, misEmission);
     Shading sh = shadingAt(ray, *hit, scene_.geometry().isFlat(hit->surface), scene_.objectFrame(hit->surface));
     if (state.kind == PathState::Kind::Primary && scene_.varies(hit->surface))
@@ -198,9 +254,10 @@ Spectrum Integrator::blendedHit(const Ray& ray, const SurfaceHit& hit, const Sha
 // The value of a hit shaded by material (or emitter) `mat`; -1 and cut-away surfaces let the ray go on.
 Spectrum Integrator::shadeHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, int mat, const PathState& state,
                               Context& ctx, RayRecord* record, Spectrum* misEmission) const {
-    if (mat < 0 || (state.clipCount > 0 && clipped(mat, state)))
+    if (mat < 0 || (state.clips.count > 0 && clipped(mat, state)))
         return passThrough(ray, hit, state, ctx, record, misEmission);
-    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit.normal, ray.dir) > 0, crossed))
+    if (PathState crossed = state; crossesAntimatter(mat, glm::dot(hit.normal, ray.dir) > 0, crossed) ||
+                                   crossesMist(mat, glm::dot(hit.normal, ray.dir) > 0, crossed))
         return passThrough(ray, hit, crossed, ctx, record, misEmission);
     if (record) {
         record->firstLength = record->effectiveLength = hit.t;

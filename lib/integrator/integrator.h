@@ -11,6 +11,7 @@
 #include "cache/irradiance_cache.h"
 #include "integrator/render_scene.h"
 #include "integrator/settings.h"
+#include "medium/participating_media.h"
 #include "pattern/pattern_evaluator.h"
 #include "sampling/random.h"
 
@@ -97,6 +98,20 @@ private:
                       Spectrum* misEmission) const;
     Spectrum radianceAlong(const Ray& ray, const PathState& state, Context& ctx, RayRecord* record,
                            Spectrum* misEmission) const;
+    Spectrum surfaceRadiance(const Ray& ray, const std::optional<SurfaceHit>& hit, const PathState& state,
+                             Context& ctx, RayRecord* record, Spectrum* misEmission) const;
+    // Media (media_transport.cpp).
+    HomogeneousMedium homogeneousAlong(const Ray& ray, const SurfaceHit* hit, const PathState& state) const;
+    Spectrum throughMedia(const Ray& ray, const std::optional<SurfaceHit>& hit, const HomogeneousMedium& h,
+                          const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
+    Spectrum mediaTransmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                                Context& ctx) const;
+    Spectrum clearTransmittance(const Ray& ray, double distance, const PathState& state, Context& ctx) const;
+    Spectrum inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                         const PathState& state, Context& ctx) const;
+    Spectrum scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
+                       Context& ctx) const;
+    int inScatteringSamples(double length) const;
     Spectrum blendedHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const PathState& state, Context& ctx,
                         RayRecord* record, Spectrum* misEmission) const;
     Spectrum shadeHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, int mat, const PathState& state,
@@ -148,6 +163,8 @@ private:
                            PathState& state, Context& ctx, SurfaceHit* reached) const;
     bool clipped(int modifier, const PathState& state) const;
     bool crossesAntimatter(int material, bool backside, PathState& state) const;
+    bool crossesMist(int material, bool backside, PathState& state) const;
+    PathState startingAt(const dvec3& point) const;
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Context& ctx,
                float& boost, bool roulette = false) const;
     bool bounceTail() const;
@@ -163,6 +180,9 @@ private:
     uint64_t runSeed_;
     uint64_t id_;     // tells this integrator's per-thread pattern state from earlier integrators'
     double epsilon_;  // offset for sensor points off their surface, relative to the scene size
+    HomogeneousMedium global_;  // -me, -ma, -mg in the sampling's bands
+    ParticipatingMedia media_;  // the smoke at the settings' instant
+    bool hasMedia_;             // anything at all absorbs or scatters
 };
 
 }  // namespace brume

@@ -1,5 +1,6 @@
 // The state a path carries from ray to ray, and the per-ray context, shared by the integrator's parts.
 #pragma once
+#include <algorithm>
 #include <numbers>
 
 #include "integrator/integrator.h"
@@ -50,6 +51,23 @@ inline void applyTexturing(Shading& sh, const Texturing& t, const Ray& ray, cons
 }
 }  // namespace integrator_detail
 
+// Closed volumes (scene objects) a ray is inside, in the order it entered them: known from the boundaries it
+// crossed, as in Radiance.
+struct InsideVolumes {
+    static constexpr int kMax = 8;
+    int objects[kMax];
+    int count = 0;
+
+    bool contains(int object) const { return std::find(objects, objects + count, object) != objects + count; }
+    void enter(int object) {
+        if (count < kMax && !contains(object)) objects[count++] = object;
+    }
+    void leave(int object) {
+        int* end = std::remove(objects, objects + count, object);
+        count = int(end - objects);
+    }
+};
+
 // How the ray being traced was chosen, which decides how it counts the light sources it meets.
 struct Integrator::PathState {
     enum class Kind { Primary, Specular, Sampled } kind = Kind::Primary;
@@ -65,22 +83,8 @@ struct Integrator::PathState {
     // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
     // next-event estimation through their mirror images.
     int viaMirror = -1;
-    // Antimatter volumes the ray is inside (scene objects), which hide the surfaces they cut.
-    static constexpr int kMaxClips = 8;
-    int clips[kMaxClips];
-    int clipCount = 0;
-
-    bool enters(int antimatter) {
-        for (int i = 0; i < clipCount; ++i)
-            if (clips[i] == antimatter) return false;
-        if (clipCount == kMaxClips) return false;
-        clips[clipCount++] = antimatter;
-        return true;
-    }
-    void leaves(int antimatter) {
-        for (int i = 0; i < clipCount; ++i)
-            if (clips[i] == antimatter) clips[i] = clips[--clipCount];
-    }
+    // Antimatter volumes the ray is inside, which hide the surfaces they cut; mists it is inside.
+    InsideVolumes clips, mists;
 };
 
 // What a work item or a record's computation learns from the irradiance cache: where records were missing.

@@ -54,10 +54,10 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addUnsupported("-ai", 1, "ambient include modifier");
     t.addUnsupported("-aE", 1, "ambient exclude file");
     t.addUnsupported("-aI", 1, "ambient include file");
-    t.addUnsupported("-me", 3, "mist extinction coefficient");
-    t.addUnsupported("-ma", 3, "mist scattering albedo");
-    t.addUnsupported("-mg", 1, "mist scattering eccentricity");
-    t.addUnsupported("-ms", 1, "mist sampling distance");
+    addColor(t, "-me", s.medium.extinction, "global medium extinction coefficient (1/world unit)");
+    addColor(t, "-ma", s.medium.albedo, "global medium scattering albedo");
+    addRealOption(t, "-mg", s.medium.g, "global medium scattering eccentricity (Henyey-Greenstein g)");
+    addRealOption(t, "-ms", s.mediumSampling, "medium sampling distance: in-scattering samples along a ray");
     addIntOption(t, "-cs", s.sampling.channels, "spectral samples (3: RGB; up to 96 bands)");
     t.add("-cw", 2, "spectral range (nm)",
           [&s](const auto& a) { s.sampling.shortest = toReal("-cw", a[0]), s.sampling.longest = toReal("-cw", a[1]); },
@@ -158,6 +158,13 @@ std::optional<CommandLine> parseCommandLine(int argc, char** argv, const OptionT
 }
 
 void checkRenderSettings(const RenderSettings& s) {
+    const HomogeneousMedium& m = s.medium;
+    for (int i = 0; i < 3; ++i) {
+        if (!(m.extinction[i] >= 0)) throw Error("-me: extinction coefficients must be positive or 0");
+        if (!(m.albedo[i] >= 0 && m.albedo[i] <= 1)) throw Error("-ma: albedo must be between 0 and 1");
+    }
+    if (!(std::abs(m.g) < 1)) throw Error("-mg: eccentricity must be between -1 and 1");
+    if (!(s.mediumSampling >= 0)) throw Error("-ms: sampling distance must be positive or 0");
     if (s.maxReflections <= 0 && !(s.minWeight > 0))
         throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
 }

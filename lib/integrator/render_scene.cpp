@@ -4,13 +4,15 @@
 #include <numbers>
 #include <set>
 
+#include "pattern/pattern_evaluator.h"
+
 namespace brume {
 
 namespace {
 
 // Types of Radiance 6.1 that later work will add; a scene using them gets a clear error, not a wrong picture.
 const std::set<std::string> kPlannedTypes{
-    "mist", "spectrum", "specfile", "specfunc", "specdata", "specpict", "ashik2",
+    "spectrum", "specfile", "specfunc", "specdata", "specpict", "ashik2",
     "WGMDfunc", "interface", "prism1", "prism2", "aBSDF", "BRTDfunc"};
 
 // The key of a placed surface in RenderScene::placedLight_.
@@ -32,6 +34,8 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
         objectFrames_.push_back({p.patternTransform, p.patternTransform.inverse()});
     addSources();
     addMirrors();
+    addMists();
+    addSmoke();
     findShadowBlockers();
 }
 
@@ -71,7 +75,8 @@ bool RenderScene::anyVaryingSurface() const {
 void RenderScene::checkTypes() const {
     for (const SceneObject& o : scene_.objects) {
         if (isSurfaceType(o.type) || isMaterialType(o.type) || isEmitterType(o.type) || o.type == "source" ||
-            o.type == "antimatter" || o.type == "instance" || o.type == "mesh" || isPatternType(o.type) ||
+            o.type == "antimatter" || o.type == "mist" || o.type == "smoke" ||
+            o.type == "instance" || o.type == "mesh" || isPatternType(o.type) ||
             isMixtureType(o.type))
             continue;
         if (kPlannedTypes.count(o.type))
@@ -81,7 +86,8 @@ void RenderScene::checkTypes() const {
     for (const SceneObject& o : scene_.objects) {
         if (o.modifier < 0) continue;
         const SceneObject& m = scene_.objects[o.modifier];
-        if (!isMaterialType(m.type) && !isEmitterType(m.type) && m.type != "antimatter" && !isPatternType(m.type) &&
+        if (!isMaterialType(m.type) && !isEmitterType(m.type) && m.type != "antimatter" && m.type != "mist" &&
+            !isPatternType(m.type) &&
             !isMixtureType(m.type))
             throw Error(o.where, "modifier '" + m.name + "' of " + o.type + " \"" + o.name + "\" is a " + m.type +
                                      ", not a material, pattern, texture or mixture");
@@ -103,6 +109,42 @@ void RenderScene::addAntimatter() {
                 throw Error(o.where, "undefined modifier \"" + name + "\" in antimatter \"" + o.name + "\"");
             cut.push_back(modifier);
         }
+    }
+}
+
+// Mists; a pattern on one would scale its extinction (Radiance's line integrals), which Brume does not do.
+void RenderScene::addMists() {
+    for (int i = 0; i < static_cast<int>(scene_.objects.size()); ++i) {
+        const SceneObject& o = scene_.objects[i];
+        if (o.type != "mist") continue;
+        if (o.modifier >= 0)
+            throw Error(o.where, "patterns on mist \"" + o.name + "\" are not supported by Brume yet");
+        Mist& mist = mists_[i] = readMist(o);
+        for (const std::string& name : mist.sources) {
+            std::string source = name.substr(name.rfind('>') + 1);  // Radiance's relays: mirror>source
+            bool known = std::any_of(lights_.begin(), lights_.end(),
+                                     [&](const Light& l) { return scene_.objects[l.object()].name == source; });
+            if (!known) warn(o.where.str() + ": unknown source \"" + name +
+                             "\" in mist \"" + o.name + "\"");
+        }
+    }
+}
+
+// Smoke; a spectrum as its modifier (spectrum, specfile, specfunc) makes its extinction spectral: K(λ) = K·s(λ).
+void RenderScene::addSmoke() {
+    for (const SceneObject& o : scene_.objects) {
+        if (o.type != "smoke") continue;
+        SmokeDescription smoke = readSmoke(o);
+        if (o.modifier >= 0) {
+            const SceneObject& m = scene_.objects[o.modifier];
+            if (m.type != "spectrum" && m.type != "specfile" && m.type != "specfunc")
+                throw Error(o.where, "modifier '" + m.name + "' of smoke '" + o.name +
+                                         "' is a " + m.type + ": expected a spectrum, specfile or specfunc");
+            PatternEvaluator evaluator(*modifiers_);
+            PatternHit origin{dvec3(0), dvec3(0, 0, 1), dvec3(0, 0, 1)};
+            smoke.extinctionPerDensity *= modifiers_->resolve(o.modifier, origin, evaluator, 0.5).texturing.color;
+        }
+        smoke_.push_back(std::move(smoke));
     }
 }
 

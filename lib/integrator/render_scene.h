@@ -9,6 +9,8 @@
 #include "geometry/scene_geometry.h"
 #include "light/light.h"
 #include "material/material.h"
+#include "medium/mist.h"
+#include "medium/smoke.h"
 #include "pattern/modifier_chain.h"
 
 namespace brume {
@@ -59,6 +61,14 @@ public:
         auto it = antimatter_.find(object);
         return it == antimatter_.end() ? nullptr : &it->second;
     }
+    // For a mist object: what it does to the medium of rays crossing it (else nullptr).
+    const Mist* mist(int object) const {
+        auto it = mists_.find(object);
+        return it == mists_.end() ? nullptr : &it->second;
+    }
+    bool hasMists() const { return !mists_.empty(); }
+    // The scene's smoke objects, their extinction times their spectrum modifier.
+    const std::vector<SmokeDescription>& smoke() const { return smoke_; }
     // The light that samples a surface, or -1.
     int lightOfSurface(const SurfaceId& id) const;
     const std::vector<PlanarMirror>& planarMirrors() const { return mirrors_; }
@@ -88,6 +98,8 @@ private:
     void addPlacedLights();
     void addAntimatter();
     void addMirrors();
+    void addMists();
+    void addSmoke();
     void findShadowBlockers();
     bool anyVaryingSurface() const;
 
@@ -105,6 +117,8 @@ private:
     std::vector<int> distant_;  // indices into lights_
     std::unordered_map<int, std::vector<int>> antimatter_;
     std::vector<PlanarMirror> mirrors_;
+    std::unordered_map<int, Mist> mists_;
+    std::vector<SmokeDescription> smoke_;
     std::vector<int> surfaceMirror_;  // index in mirrors_, or -1
     std::vector<bool> blocksShadows_;  // per modifier object
     bool blockersDecide_ = true;

@@ -6,6 +6,7 @@
 
 #include "cache/record_shape.h"
 #include "material/material.h"
+#include "medium/homogeneous_medium.h"
 #include "spectrum/spectral_sampling.h"
 #include "spectrum/spectrum.h"
 
@@ -36,7 +37,9 @@ struct RenderSettings {
     bool randomSampling = true;      // -u: a new seed each run; -u- a fixed one
     uint64_t seed = 0;               // used when -u-
     SpectralSampling sampling;       // -cs, -cw
-    std::optional<double> time;      // -T: the scene's instant (s), for time-varying content (none yet: smoke, later)
+    std::optional<double> time;      // -T: the scene's instant (s), for smoke that evolves in time
+    HomogeneousMedium medium;        // -me, -ma (RGB as given; the integrator lifts them to the bands), -mg
+    double mediumSampling = 0;       // -ms: spacing of in-scattering samples along a ray (0: one per ray)
 };
 
 }  // namespace brume

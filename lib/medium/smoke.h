@@ -34,6 +34,7 @@ public:
     double density(const dvec3& p) const;
     // σ_t at p, per band.
     Spectrum extinction(const dvec3& p) const { return description_.extinctionPerDensity * float(density(p)); }
+    const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
     const Spectrum& albedo() const { return description_.albedo; }
     double g() const { return description_.g; }
     // Calls f(t0, t1, majorant) -> bool for consecutive stretches of [tmin, tmax] along the ray inside the

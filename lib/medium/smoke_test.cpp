@@ -40,13 +40,6 @@ std::string errorOf(const std::string& text) {
     return "no error";
 }
 
-// Writes `grid` as grid `name` of the .vdb file `file` in `dir` (RAYPATH).
-void writeGrid(const RayPathDir& dir, const std::string& file, openvdb::FloatGrid::Ptr grid,
-               const std::string& name = "density") {
-    grid->setName(name);
-    openvdb::io::File((dir.path() / file).string()).write({grid});
-}
-
 // Voxels 0..14 of 0.1 holding uniform random densities in [0, 3): the majorant grid's 8-voxel cells then
 // span exactly the smoke's bounds (index −1 … 15, world −0.1 … 1.5).
 openvdb::FloatGrid::Ptr randomGrid(Random& random) {
@@ -58,8 +51,8 @@ openvdb::FloatGrid::Ptr randomGrid(Random& random) {
 
 TEST(Smoke, EveryFormReadsItsFilesTimesAndCoefficients) {
     RayPathDir dir;
-    writeGrid(dir, "box.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 2.0f, 0.1));
-    writeGrid(dir, "soot.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 5.0f, 0.1), "soot");
+    writeGrid(dir.path() / "box.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 2.0f, 0.1));
+    writeGrid(dir.path() / "soot.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 5.0f, 0.1), "soot");
     // One static grid, no albedo, no g.
     SmokeDescription still = smokeOf("void smoke s 1 box.vdb 0 3 1 2 4");
     ASSERT_EQ(still.frames->keyFrames().size(), 1u);
@@ -86,7 +79,7 @@ TEST(Smoke, EveryFormReadsItsFilesTimesAndCoefficients) {
 
 TEST(Smoke, GreyExtinctionStaysExactlyFlatInEveryBandCount) {
     RayPathDir dir;
-    writeGrid(dir, "box.vdb", boxGrid({0, 0, 0}, {1, 1, 1}, 1.0f));
+    writeGrid(dir.path() / "box.vdb", boxGrid({0, 0, 0}, {1, 1, 1}, 1.0f));
     for (int bands : {3, 40}) {
         SpectralSamplingScope sampling(bands);
         SmokeDescription soot = smokeOf("void smoke s 1 box.vdb 0 6 8700 8700 8700 .15 .15 .15");
@@ -100,7 +93,7 @@ TEST(Smoke, GreyExtinctionStaysExactlyFlatInEveryBandCount) {
 
 TEST(Smoke, EveryMalformedSmokeIsAnErrorAtItsLine) {
     RayPathDir dir;
-    writeGrid(dir, "box.vdb", boxGrid({0, 0, 0}, {1, 1, 1}, 1.0f));
+    writeGrid(dir.path() / "box.vdb", boxGrid({0, 0, 0}, {1, 1, 1}, 1.0f));
     const std::string strings = "expected [density=NAME] then one file, or key frames as time and file pairs";
     const std::string reals = "expected 3, 6 or 7 reals";
     const std::string noSoot = (dir.path() / "box.vdb").string() + ": no grid \"soot\" (the file holds \"density\")";
@@ -135,7 +128,7 @@ TEST(Smoke, ConstantBoxHasExtinctionKTimesDensityInsideAndNoneOutside) {
     // Voxels 0..9 of 0.1 at density 2: constant between the outer voxel centres 0 … 0.9, zero from one
     // voxel beyond them. Exact: equal voxels interpolate to their value, and 2·K is exact in float.
     RayPathDir dir;
-    writeGrid(dir, "box.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 2.0f, 0.1));
+    writeGrid(dir.path() / "box.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 2.0f, 0.1));
     SmokeVolume box(smokeOf("void smoke s 1 box.vdb 0 6 1 2 4 .5 .5 .5"), 0);
     for (const dvec3& p : {dvec3(0.45, 0.45, 0.45), dvec3(0, 0.9, 0.3), dvec3(0.9, 0.9, 0.9)}) {
         const Spectrum sigma = box.extinction(p);
@@ -155,8 +148,8 @@ TEST(Smoke, MajorantsBoundExtinctionAndSegmentsCoverTheChordOfTheBox) {
     // sets the majorant. Majorant ≥ extinction is checked exactly: the scale is rounded up for that.
     Random random(7);
     RayPathDir dir;
-    writeGrid(dir, "a.vdb", randomGrid(random));
-    writeGrid(dir, "b.vdb", randomGrid(random));
+    writeGrid(dir.path() / "a.vdb", randomGrid(random));
+    writeGrid(dir.path() / "b.vdb", randomGrid(random));
     SmokeVolume smoke(smokeOf("void smoke s 4 0 a.vdb 10 b.vdb 0 3 1 2 4"), 3.7);
     const Bounds3 b = smoke.bounds();
     EXPECT_NEAR(b.lo.x, -0.1, 1e-12);
@@ -203,8 +196,8 @@ TEST(Smoke, MajorantsBoundExtinctionAndSegmentsCoverTheChordOfTheBox) {
 TEST(Smoke, KeyFramesInterpolateLinearlyInTimeAndHoldOutside) {
     // Densities 1 at 10 s and 3 at 20 s: the mean at 15 s, exact since w = 0.5 and the values are small integers.
     RayPathDir dir;
-    writeGrid(dir, "thin.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f));
-    writeGrid(dir, "thick.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 3.0f));
+    writeGrid(dir.path() / "thin.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f));
+    writeGrid(dir.path() / "thick.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 3.0f));
     const SmokeDescription smoke = smokeOf("void smoke s 4 10 thin.vdb 20 thick.vdb 0 3 2 2 2");
     const dvec3 p(4.5, 4.5, 4.5);
     EXPECT_EQ(SmokeVolume(smoke, 15).density(p), 2.0);
@@ -227,7 +220,7 @@ TEST(Smoke, KeyFramesInterpolateLinearlyInTimeAndHoldOutside) {
 TEST(Smoke, EmptyGridIsAValidSmokeWithNoMedium) {
     RayPathDir dir;
     openvdb::initialize();
-    writeGrid(dir, "empty.vdb", openvdb::FloatGrid::create(0.0f));
+    writeGrid(dir.path() / "empty.vdb", openvdb::FloatGrid::create(0.0f));
     SmokeVolume empty(smokeOf("void smoke s 1 empty.vdb 0 3 1 1 1"), 0);
     EXPECT_TRUE(empty.bounds().empty());
     EXPECT_EQ(empty.density({0, 0, 0}), 0.0);

@@ -1,6 +1,7 @@
 // For the medium's unit tests: grids of known content built in memory, and the real grids in ../shared/data.
 #pragma once
 #include <gtest/gtest.h>
+#include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
 #include <filesystem>
@@ -31,6 +32,12 @@ inline openvdb::FloatGrid::Ptr boxGrid(openvdb::Coord lo, openvdb::Coord hi, flo
 
 inline DensityGrid densityOf(openvdb::FloatGrid::Ptr grid, const std::string& name = "test grid") {
     return DensityGrid(std::make_shared<DensityGrid::Voxels>(std::move(grid), name));
+}
+
+// Writes `grid` as grid `name` of the .vdb file `path`.
+inline void writeGrid(const std::filesystem::path& path, openvdb::FloatGrid::Ptr grid, const std::string& name = "density") {
+    grid->setName(name);
+    openvdb::io::File(path.string()).write({grid});
 }
 
 }  // namespace brume::medium::testing

@@ -33,7 +33,7 @@ void ModifierChain::build(int i) {
     const SceneObject& o = scene_.objects[i];
     Node& n = nodes_[i];
     const Node* next = o.modifier >= 0 ? &nodes_[o.modifier] : nullptr;
-    if (isMaterialType(o.type) || isEmitterType(o.type) || o.type == "antimatter") {
+    if (isMaterialType(o.type) || isEmitterType(o.type) || o.type == "antimatter" || o.type == "mist") {
         if (next && next->reachesMaterial)
             throw Error(o.where, "conflicting material among the modifiers of " + o.type + " \"" + o.name + "\"");
         n.kind = Kind::Material;

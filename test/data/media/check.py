@@ -133,3 +133,12 @@ for alb, g, tag in ((1., 0., 'b_sun_a1'), (.5, .6, 'b_sun_a05_g06')):
         f = .05*alb*hg(g, d[2]*np.ones_like(tt))/(4*np.pi)*Esun*np.exp(-.05*(1-x[:,2]))*np.exp(-.05*(tt-t0))
         vals.append(trapz(f, tt))
     print(f"{tag} physical single scatter (full extinction on sun path): {np.array(vals)}")
+# ---- c, physical single scattering (full extinction σe on the lamp path inside the mist), for Brume
+def c_phys(o, t0, t1, glow_t):
+    d = np.array([0,1.,0]); se, a, g = .1, .8, .3
+    tt = np.linspace(t0, t1, 400001); x = o[None,:]+tt[:,None]*d[None,:]
+    v = lamp[None,:]-x; dist = np.linalg.norm(v, axis=1); u = v/dist[:,None]
+    f = se*a*hg(g, u@d)/(4*np.pi)*1000*np.pi*.05**2/dist**2*np.exp(-se*exitdist(x, u))*np.exp(-se*(tt-t0))
+    return np.exp(-se*glow_t) + trapz(f, tt)
+print("c physical single scatter (rays 0, 2, 3, 4; ray 3's eye is inside the mist):", [c_phys(np.array([0,-4.5,1.5]), 3.5, 5.5, 2),
+      c_phys(np.array([0,0,1.5]), 0, 1, 1), c_phys(np.array([.6,-.5,1.5]), 0, 1, 1), c_phys(np.array([.6,-4.5,1.5]), 3.5, 5.0, 1.5)])

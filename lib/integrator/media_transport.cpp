@@ -1,0 +1,139 @@
+// Light along rays through participating media: attenuation, and light scattered toward the ray by the
+// media it crosses, by null-collision tracking through the homogeneous medium and the smoke together.
+// Rays whose value is the answer (primary rays and their specular children) see what lies behind the
+// medium weighted by its transmittance and in-scattering at points forced into the medium; rays averaged
+// with many others (diffuse and sampled ones) take delta tracking's first collision or the surface behind.
+#include <algorithm>
+#include <cmath>
+
+#include "integrator/integrator.h"
+#include "integrator/path_state.h"
+#include "medium/forced_collision.h"
+#include "sampling/random.h"
+
+namespace brume {
+
+using namespace integrator_detail;
+
+// The global medium and the mists the ray is in. A ray leaving a mist it was not known to be in started inside
+// it (the eye or sensor in the mist): the mist fills the ray's way to that boundary, as Radiance rules for
+// mists with a source list.
+HomogeneousMedium Integrator::homogeneousAlong(const Ray& ray, const SurfaceHit* hit, const PathState& state) const {
+    HomogeneousMedium h = global_;
+    for (int i = 0; i < state.mists.count; ++i) h = scene_.mist(state.mists.objects[i])->inside(h);
+    if (!hit || !scene_.hasMists()) return h;
+    int material = scene_.materialObject(hit->surface);
+    const Mist* mist = material >= 0 ? scene_.mist(material) : nullptr;
+    if (mist && glm::dot(hit->normal, ray.dir) > 0 && !state.mists.contains(material)) h = mist->inside(h);
+    return h;
+}
+
+Spectrum Integrator::throughMedia(const Ray& ray, const std::optional<SurfaceHit>& hit, const HomogeneousMedium& h,
+                                  const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const {
+    double start = 0, end = hit ? hit->t : ray.tmax;  // the medium fills the way from the ray's origin
+    auto behind = [&](const Spectrum& weight) {
+        Spectrum mis(0.f);
+        Spectrum value = surfaceRadiance(ray, hit, state, ctx, record, misEmission ? &mis : nullptr) * weight;
+        if (misEmission) *misEmission += mis * weight;
+        return value;
+    };
+    bool scatters = media_.scatters(h);
+    bool answer = state.kind != PathState::Kind::Sampled && state.ambientLevel == 0;
+    if (scatters && !answer) {
+        std::vector<MajorantSegment> segments;
+        media_.majorants(ray, start, end, &h, segments);
+        auto extinction = [&](double t) { return h.extinction + media_.smokeExtinction(ray.org + t * ray.dir); };
+        Spectrum weight(1.f);
+        auto collision = deltaTracking(segments, extinction, weight, ctx.rng);
+        if (!collision) return weight.isBlack() ? weight : behind(weight);
+        dvec3 point = ray.org + *collision * ray.dir;
+        PhaseMixture phase;  // σ_s · weight / σ_t: the collision's albedo times what tracking carried
+        media_.scattering(point, h, weight / extinction(*collision), phase);
+        return scattered(point, ray.dir, phase, state, ctx);
+    }
+    Spectrum t = mediaTransmittance(ray, start, end, h, ctx);
+    Spectrum value = t.isBlack() ? t : behind(t);
+    if (scatters) value += inScattered(ray, start, end, h, state, ctx);
+    return value;
+}
+
+// exp(−∫σ_t) between start and end: in closed form for the homogeneous medium, by ratio tracking in smoke.
+Spectrum Integrator::mediaTransmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                                        Context& ctx) const {
+    Spectrum t = h.transmittance(end - start);
+    if (t.isBlack() || !media_.smokeAlong(ray, start, end)) return t;
+    std::vector<MajorantSegment> segments;
+    media_.majorants(ray, start, end, nullptr, segments);
+    if (segments.empty()) return t;
+    return t * ratioTracking(segments, [&](double s) { return media_.smokeExtinction(ray.org + s * ray.dir); }, ctx.rng);
+}
+
+// Along a shadow ray that meets no surface before `distance`.
+Spectrum Integrator::clearTransmittance(const Ray& ray, double distance, const PathState& state, Context& ctx) const {
+    return mediaTransmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state), ctx);
+}
+
+// Radiance's rule for its in-scattering samples along a ray: one per -ms of length in the medium, 1 to 16.
+int Integrator::inScatteringSamples(double length) const {
+    double spacing = settings_.mediumSampling;
+    if (!(spacing > 0)) return 1;
+    return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
+}
+
+// ∫ T(t) σ_s(t) L_s(t) dt over [start, end], stratified, at points forced into the medium (ForcedCollision)
+// by the majorant of the largest band or of the clearest one, half the points each, weighed by the mixture of
+// both densities (one-sample MIS): clear bands see far, dense ones near, and T_λ σ_s / density stays bounded
+// in every band. In a grey homogeneous medium that ratio is a constant: only L_s is sampled.
+Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                                 const PathState& state, Context& ctx) const {
+    std::vector<MajorantSegment> dense, clear;
+    media_.majorants(ray, start, end, &h, dense);
+    media_.majorants(ray, start, end, &h, clear, ParticipatingMedia::Band::Smallest);
+    ForcedCollision near(dense), far(clear);
+    if (!(near.reach() > 0)) return Spectrum(0.f);
+    bool mixed = far.reach() > 0 && !std::equal(dense.begin(), dense.end(), clear.begin(), clear.end(),
+                                                [](const MajorantSegment& a, const MajorantSegment& b) {
+                                                    return a.t0 == b.t0 && a.t1 == b.t1 && a.majorant == b.majorant;
+                                                });
+    double length = 0;
+    for (const MajorantSegment& s : dense) length += s.t1 - s.t0;
+    int n = inScatteringSamples(length);
+    Spectrum sum(0.f);
+    for (int k = 0; k < n; ++k) {
+        double u = (k + ctx.rng.uniform()) / n;
+        double t = mixed && ctx.rng.uniform() < 0.5 ? far.sample(u) : near.sample(u);
+        double density = mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t);
+        if (!(density > 0)) continue;
+        Spectrum tr = mediaTransmittance(ray, start, t, h, ctx);
+        if (tr.isBlack()) continue;
+        dvec3 point = ray.org + t * ray.dir;
+        PhaseMixture phase;
+        media_.scattering(point, h, tr * float(1 / (density * n)), phase);
+        if (!phase.empty()) sum += scattered(point, ray.dir, phase, state, ctx);
+    }
+    return sum;
+}
+
+// The light a medium at `point` scatters back along the ray of direction `dir`, the phase's coefficients
+// included: the sources' by next-event estimation, the rest by one ray drawn from the phase function while
+// -ab bounces remain (a scattering is a bounce, as a diffuse reflection is), else -av.
+Spectrum Integrator::scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
+                               Context& ctx) const {
+    Shading sh{point, -dir, dir, 1.0, false, false, 0};
+    bool beyond = state.ambientLevel >= settings_.ambientBounces;
+    bool continues = !beyond || bounceTail();
+    Lobes lobes;
+    lobes.general = &phase;
+    lobes.sampleGeneral = continues;
+    Spectrum value = direct(sh, lobes, SurfaceId{}, state, ctx);
+    if (!continues) return value + phase.coefficient() * settings_.ambientValue;
+    double u = ctx.rng.uniform(), v = ctx.rng.uniform();
+    auto s = phase.sample(sh, u, v);
+    PathState child;
+    float boost;
+    if (!s || !spawn(state, child, s->weight, true, ctx, boost, beyond)) return value;
+    child.ambientLevel = state.ambientLevel + 1;
+    return value + s->weight * sampledRadiance(sh, SurfaceId{}, s->dir, s->pdf, state, child, ctx) * boost;
+}
+
+}  // namespace brume

@@ -1,0 +1,102 @@
+#include "medium/participating_media.h"
+
+#include <algorithm>
+
+namespace brume {
+
+namespace {
+
+// Whether the ray meets the box between start and end (slabs; closed, so grazing rays count).
+bool crosses(const Bounds3& b, const Ray& ray, double start, double end) {
+    if (b.empty()) return false;
+    for (int a = 0; a < 3; ++a) {
+        if (ray.dir[a] == 0) {
+            if (ray.org[a] < b.lo[a] || ray.org[a] > b.hi[a]) return false;
+            continue;
+        }
+        double t0 = (b.lo[a] - ray.org[a]) / ray.dir[a], t1 = (b.hi[a] - ray.org[a]) / ray.dir[a];
+        start = std::max(start, std::min(t0, t1));
+        end = std::min(end, std::max(t0, t1));
+    }
+    return start <= end;
+}
+
+// `sum` (in order, covering what it covers) with the piecewise-constant `add` added over its stretches.
+void addSegments(std::vector<MajorantSegment>& sum, const std::vector<MajorantSegment>& add,
+                 std::vector<MajorantSegment>& scratch) {
+    scratch.clear();
+    size_t j = 0;
+    for (const MajorantSegment& s : sum) {
+        double t = s.t0;
+        while (t < s.t1) {
+            while (j < add.size() && add[j].t1 <= t) ++j;
+            if (j == add.size() || add[j].t0 >= s.t1) {
+                scratch.push_back({t, s.t1, s.majorant});
+                break;
+            }
+            if (add[j].t0 > t) {
+                scratch.push_back({t, add[j].t0, s.majorant});
+                t = add[j].t0;
+            }
+            double end = std::min(s.t1, add[j].t1);
+            scratch.push_back({t, end, s.majorant + add[j].majorant});
+            t = end;
+        }
+    }
+    sum.swap(scratch);
+}
+
+// The largest band, or the smallest positive one (0 if none is).
+double bandOf(const Spectrum& s, ParticipatingMedia::Band band) {
+    if (band == ParticipatingMedia::Band::Largest) return std::max(0.f, s.maxValue());
+    double least = 0;
+    for (int i = 0; i < s.size(); ++i)
+        if (s[i] > 0 && (least == 0 || s[i] < least)) least = s[i];
+    return least;
+}
+
+}  // namespace
+
+bool ParticipatingMedia::smokeAlong(const Ray& ray, double start, double end) const {
+    return std::any_of(smoke_.begin(), smoke_.end(),
+                       [&](const SmokeVolume& v) { return crosses(v.bounds(), ray, start, end); });
+}
+
+bool ParticipatingMedia::scatters(const HomogeneousMedium& h) const {
+    return h.scatters() ||
+           std::any_of(smoke_.begin(), smoke_.end(), [](const SmokeVolume& v) { return !v.albedo().isBlack(); });
+}
+
+void ParticipatingMedia::majorants(const Ray& ray, double start, double end, const HomogeneousMedium* h,
+                                   std::vector<MajorantSegment>& out, Band band) const {
+    thread_local std::vector<MajorantSegment> smoke, scratch;
+    out.clear();
+    out.push_back({start, end, h ? bandOf(h->extinction, band) : 0.0});
+    for (const SmokeVolume& v : smoke_) {
+        if (!crosses(v.bounds(), ray, start, end)) continue;
+        const Spectrum& k = v.extinctionPerDensity();
+        if (!(k.maxValue() > 0)) continue;
+        double scale = band == Band::Largest ? 1.0 : bandOf(k, band) / bandOf(k, Band::Largest);
+        smoke.clear();
+        v.forEachSegment(ray, start, end, [&](double t0, double t1, double m) {
+            smoke.push_back({t0, t1, m * scale});
+            return true;
+        });
+        addSegments(out, smoke, scratch);
+    }
+    std::erase_if(out, [](const MajorantSegment& s) { return !(s.majorant > 0) || !(s.t1 > s.t0); });
+}
+
+Spectrum ParticipatingMedia::smokeExtinction(const dvec3& p) const {
+    Spectrum sum(0.f);
+    for (const SmokeVolume& v : smoke_) sum += v.extinction(p);
+    return sum;
+}
+
+void ParticipatingMedia::scattering(const dvec3& p, const HomogeneousMedium& h, const Spectrum& scale,
+                                    PhaseMixture& out) const {
+    out.add(h.extinction * h.albedo * scale, h.g);
+    for (const SmokeVolume& v : smoke_) out.add(v.extinction(p) * v.albedo() * scale, v.g());
+}
+
+}  // namespace brume

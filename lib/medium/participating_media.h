@@ -1,0 +1,42 @@
+// What absorbs and scatters light along a ray at one instant of the scene: the homogeneous medium the ray is
+// in (Radiance's global medium and the mists it crossed into, which the integrator follows) and the smoke
+// volumes, which are where their grids say whatever the ray crossed. Extinction adds up; a scattering event
+// picks one of them by its scattering coefficient.
+#pragma once
+#include <vector>
+
+#include "medium/homogeneous_medium.h"
+#include "medium/null_collisions.h"
+#include "medium/phase_mixture.h"
+#include "medium/smoke.h"
+
+namespace brume {
+
+class ParticipatingMedia {
+public:
+    ParticipatingMedia() = default;
+    explicit ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(std::move(smoke)) {}
+
+    bool hasSmoke() const { return !smoke_.empty(); }
+    // Whether some smoke may lie on the ray between t = start and t = end (its grid's box is crossed).
+    bool smokeAlong(const Ray& ray, double start, double end) const;
+    // Whether anything on the ray can scatter light (or only absorbs it).
+    bool scatters(const HomogeneousMedium& h) const;
+
+    // Stretches of [start, end] in order, each with a majorant of the extinction of `h` (if given) plus the smoke:
+    // in every band (Band::Largest), or in the band of least positive extinction of each medium
+    // (Band::Smallest, which makes distance sampling reach as far as the clearest band sees). Stretches of
+    // majorant 0 are left out.
+    enum class Band { Largest, Smallest };
+    void majorants(const Ray& ray, double start, double end, const HomogeneousMedium* h,
+                   std::vector<MajorantSegment>& out, Band band = Band::Largest) const;
+    // σ_t of the smoke at p.
+    Spectrum smokeExtinction(const dvec3& p) const;
+    // The scattering at p: each medium's σ_s times `scale`, with its phase function.
+    void scattering(const dvec3& p, const HomogeneousMedium& h, const Spectrum& scale, PhaseMixture& out) const;
+
+private:
+    std::vector<SmokeVolume> smoke_;
+};
+
+}  // namespace brume
