@@ -34,7 +34,7 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
     global_.albedo = spectrumFromRgb(m.albedo[0], m.albedo[1], m.albedo[2]);
     global_.g = m.g;
     std::vector<SmokeVolume> smoke;
-    for (const SmokeDescription& d : scene.smoke()) smoke.emplace_back(d, settings.time.value_or(0));
+    for (const SmokeDescription& d : scene.smoke()) smoke.emplace_back(d, settings.time.value_or(0), settings.majorantCell);
     media_ = ParticipatingMedia(std::move(smoke));
     hasMedia_ = !global_.clear() || scene.hasMists() || media_.hasSmoke();
 }

@@ -58,6 +58,7 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addColor(t, "-ma", s.medium.albedo, "global medium scattering albedo");
     addRealOption(t, "-mg", s.medium.g, "global medium scattering eccentricity (Henyey-Greenstein g)");
     addRealOption(t, "-ms", s.mediumSampling, "medium sampling distance: in-scattering samples along a ray");
+    addIntOption(t, "-mc", s.majorantCell, "smoke majorant cell size in voxels (0: one cell, no empty-space skipping)");
     addIntOption(t, "-cs", s.sampling.channels, "spectral samples (3: RGB; up to 96 bands)");
     t.add("-cw", 2, "spectral range (nm)",
           [&s](const auto& a) { s.sampling.shortest = toReal("-cw", a[0]), s.sampling.longest = toReal("-cw", a[1]); },
@@ -165,6 +166,7 @@ void checkRenderSettings(const RenderSettings& s) {
     }
     if (!(std::abs(m.g) < 1)) throw Error("-mg: eccentricity must be between -1 and 1");
     if (!(s.mediumSampling >= 0)) throw Error("-ms: sampling distance must be positive or 0");
+    if (s.majorantCell < 0) throw Error("-mc: majorant cell size must be positive or 0");
     if (s.maxReflections <= 0 && !(s.minWeight > 0))
         throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
 }

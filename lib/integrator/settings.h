@@ -40,6 +40,7 @@ struct RenderSettings {
     std::optional<double> time;      // -T: the scene's instant (s), for smoke that evolves in time
     HomogeneousMedium medium;        // -me, -ma (RGB as given; the integrator lifts them to the bands), -mg
     double mediumSampling = 0;       // -ms: spacing of in-scattering samples along a ray (0: one per ray)
+    int majorantCell = 8;            // -mc: smoke majorant cells, in voxels (0: one for the whole grid)
 };
 
 }  // namespace brume

@@ -75,10 +75,10 @@ SmokeDescription readSmoke(const SceneObject& o) {
     return smoke;
 }
 
-SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time)
+SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsPerCell)
     : description_(smoke),
       time_(time),
-      majorant_(smoke.frames->majorant(time, time)),
+      majorant_(smoke.frames->majorant(time, time, voxelsPerCell > 0 ? voxelsPerCell : 1 << 24)),
       bounds_(smoke.frames->bounds()),
       // One float ulp above the largest band: extinction() rounds K·ρ to float, which may exceed K·ρ by
       // half an ulp, and the majorant must still bound it.

@@ -27,7 +27,9 @@ SmokeDescription readSmoke(const SceneObject& object);
 // The smoke at one instant of the scene: what rays are tracked through. Thread-safe const members.
 class SmokeVolume {
 public:
-    SmokeVolume(const SmokeDescription& smoke, double time);
+    // `voxelsPerCell`: the majorant grid's cell edge in voxels (MajorantGrid); 0 makes one cell of the whole
+    // grid, which skips no empty space inside its box (for measuring what skipping saves).
+    SmokeVolume(const SmokeDescription& smoke, double time, int voxelsPerCell = 8);
 
     // Where the density can be non-zero at some time (all key frames); empty for empty grids.
     const Bounds3& bounds() const { return bounds_; }
