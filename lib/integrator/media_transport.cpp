@@ -57,15 +57,12 @@ Spectrum Integrator::throughMedia(const Ray& ray, const std::optional<SurfaceHit
     return value;
 }
 
-// exp(−∫σ_t) between start and end: in closed form for the homogeneous medium, by ratio tracking in smoke.
+// exp(−∫σ_t) between start and end: in closed form for the homogeneous medium, by residual ratio tracking in
+// smoke.
 Spectrum Integrator::mediaTransmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                         Context& ctx) const {
     Spectrum t = h.transmittance(end - start);
-    if (t.isBlack() || !media_.smokeAlong(ray, start, end)) return t;
-    std::vector<MajorantSegment> segments;
-    media_.majorants(ray, start, end, nullptr, segments);
-    if (segments.empty()) return t;
-    return t * ratioTracking(segments, [&](double s) { return media_.smokeExtinction(ray.org + s * ray.dir); }, ctx.rng);
+    return t.isBlack() || !media_.hasSmoke() ? t : t * media_.smokeTransmittance(ray, start, end, ctx.rng);
 }
 
 // Along a shadow ray that meets no surface before `distance`.

@@ -15,14 +15,27 @@ GridSequence::GridSequence(std::vector<KeyFrame> frames) : frames_(std::move(fra
             throw Error("two key frames at time " + (std::ostringstream() << frames_[i].time).str() + " s");
 }
 
-double GridSequence::density(const dvec3& p, double time) const {
+GridSequence::Blend GridSequence::blendAt(double time) const {
     // The first frame later than `time`.
     const auto later = std::ranges::upper_bound(frames_, time, {}, &KeyFrame::time);
-    if (later == frames_.begin()) return frames_.front().grid.density(p);
-    if (later == frames_.end()) return frames_.back().grid.density(p);
-    const KeyFrame& before = *(later - 1);
-    const double w = (time - before.time) / (later->time - before.time);
-    return (1 - w) * before.grid.density(p) + w * later->grid.density(p);
+    if (later == frames_.begin()) return {0, 0, 0.0};
+    if (later == frames_.end()) return {frames_.size() - 1, frames_.size() - 1, 0.0};
+    const std::size_t i = later - frames_.begin();
+    return {i - 1, i, (time - frames_[i - 1].time) / (frames_[i].time - frames_[i - 1].time)};
+}
+
+double GridSequence::density(const dvec3& p, double time) const {
+    const Blend b = blendAt(time);
+    if (b.later == b.before) return frames_[b.before].grid.density(p);
+    return (1 - b.w) * frames_[b.before].grid.density(p) + b.w * frames_[b.later].grid.density(p);
+}
+
+MajorantGrid GridSequence::boundsAt(double time, int voxelsPerCell) const {
+    const Blend b = blendAt(time);
+    if (b.later == b.before) return MajorantGrid(frames_[b.before].grid, voxelsPerCell);
+    const DensityGrid grids[] = {frames_[b.before].grid, frames_[b.later].grid};
+    const double weights[] = {1 - b.w, b.w};
+    return MajorantGrid(grids, voxelsPerCell, weights);
 }
 
 Bounds3 GridSequence::bounds() const {

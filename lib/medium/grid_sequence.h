@@ -28,9 +28,20 @@ public:
     // each call (a pass over those frames' active voxels): keep it for the frame or interval it serves.
     MajorantGrid majorant(double t0, double t1, int voxelsPerCell = 8) const;
 
+    // Bounds of the density at the one instant `time`: the key frames around it, weighted as density() weighs
+    // them (tighter than majorant(time, time), which bounds the whole interval between them).
+    MajorantGrid boundsAt(double time, int voxelsPerCell = 8) const;
+
     const std::vector<KeyFrame>& keyFrames() const { return frames_; }
 
 private:
+    // density(p, time) = (1 − w)·frames_[before] + w·frames_[later].
+    struct Blend {
+        std::size_t before, later;
+        double w;
+    };
+    Blend blendAt(double time) const;
+
     std::vector<KeyFrame> frames_;
 };
 

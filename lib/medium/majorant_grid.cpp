@@ -1,6 +1,7 @@
 #include "medium/majorant_grid.h"
 
 #include <glm/mat4x4.hpp>
+#include <algorithm>
 #include <glm/matrix.hpp>
 
 #include "medium/density_grid_vdb.h"
@@ -36,7 +37,7 @@ Box support(const openvdb::CoordBBox& active) {
 
 }  // namespace
 
-MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell) {
+MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell, std::span<const double> weights) {
     if (grids.empty()) return;
     const openvdb::math::Transform& reference = grids[0].voxels().grid->transform();
     const glm::dmat4 referenceFromWorld = glm::inverse(worldFromIndex(reference));
@@ -66,32 +67,93 @@ MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell
     cellFromWorld_ = glm::dmat3(cellFromWorld);
     cellOffset_ = dvec3(cellFromWorld[3]);
 
-    // Every non-zero active value (a voxel, or a tile counted once) raises the cells its support meets.
-    // Rounding in the mapped boxes can only add a neighbouring cell, never miss one.
-    majorants_.assign(std::size_t(n_.x) * n_.y * n_.z, 0.0f);
+    // Bounds of any convex combination of the grids (an interval of time): the largest maximum and the
+    // smallest minimum; of the one weighted sum `weights` gives (an instant): the weighted sums.
+    const bool shared = std::all_of(referenceFromIndex.begin(), referenceFromIndex.end(),
+                                    [](const glm::dmat4& m) { return m == glm::dmat4(1.0); });
+    const bool withMinorants = shared && voxelsPerCell_ <= kMaxMinorantCell;
+    const std::size_t cells = std::size_t(n_.x) * n_.y * n_.z;
+    majorants_.assign(cells, 0.0f);
+    minorants_.assign(cells, weights.empty() ? std::numeric_limits<float>::infinity() : 0.0f);
     for (std::size_t g = 0; g < grids.size(); ++g) {
-        const glm::dmat4 cellFromIndex = cellFromReference * referenceFromIndex[g];
-        openvdb::CoordBBox box;
-        for (auto it = grids[g].voxels().grid->tree().cbeginValueOn(); it; ++it) {
-            const float v = *it;
-            if (v <= 0 || !it.getBoundingBox(box)) continue;
-            const Box cells = support(box).mapped(cellFromIndex);
-            const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(cells.lo)), glm::ivec3(0), n_ - 1);
-            const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::ceil(cells.hi)) - 1, glm::ivec3(0), n_ - 1);
-            for (int k = lo.z; k <= hi.z; ++k)
-                for (int j = lo.y; j <= hi.y; ++j)
-                    for (int i = lo.x; i <= hi.x; ++i) {
-                        float& m = majorants_[(std::size_t(k) * n_.y + j) * n_.x + i];
-                        m = std::max(m, v);
-                    }
+        std::vector<float> most = cellMaxima(grids[g], cellFromReference * referenceFromIndex[g]);
+        std::vector<float> least = withMinorants ? cellMinima(grids[g], most, origin) : std::vector<float>(cells, 0.0f);
+        for (std::size_t c = 0; c < cells; ++c) {
+            if (weights.empty()) {
+                majorants_[c] = std::max(majorants_[c], most[c]);
+                minorants_[c] = std::min(minorants_[c], least[c]);
+            } else {
+                majorants_[c] += float(weights[g]) * most[c];
+                minorants_[c] += float(weights[g]) * least[c];
+            }
         }
+    }
+    // Weighted sums round, and so does interpolation in time: widen both bounds by far more than that.
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (!weights.empty()) majorants_[c] *= 1 + 0x1p-20f;
+        minorants_[c] = std::min(minorants_[c] * (1 - 0x1p-20f), majorants_[c]);
     }
 }
 
-double MajorantGrid::majorant(const dvec3& p) const {
+// Every non-zero active value of `grid` (a voxel, or a tile counted once) raises the cells its support meets.
+// Rounding in the mapped boxes can only add a neighbouring cell, never miss one.
+std::vector<float> MajorantGrid::cellMaxima(const DensityGrid& grid, const glm::dmat4& cellFromIndex) const {
+    std::vector<float> most(std::size_t(n_.x) * n_.y * n_.z, 0.0f);
+    openvdb::CoordBBox box;
+    for (auto it = grid.voxels().grid->tree().cbeginValueOn(); it; ++it) {
+        const float v = *it;
+        if (v <= 0 || !it.getBoundingBox(box)) continue;
+        const Box cells = support(box).mapped(cellFromIndex);
+        const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(cells.lo)), glm::ivec3(0), n_ - 1);
+        const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::ceil(cells.hi)) - 1, glm::ivec3(0), n_ - 1);
+        for (int k = lo.z; k <= hi.z; ++k)
+            for (int j = lo.y; j <= hi.y; ++j)
+                for (int i = lo.x; i <= hi.x; ++i) {
+                    float& m = most[index({i, j, k})];
+                    m = std::max(m, v);
+                }
+    }
+    return most;
+}
+
+// The smallest value over the voxels whose support meets each cell where `most` has smoke (0 where an
+// inactive voxel does); the grid shares the reference grid's transform.
+std::vector<float> MajorantGrid::cellMinima(const DensityGrid& grid, const std::vector<float>& most,
+                                            const dvec3& origin) const {
+    std::vector<float> least(most.size(), 0.0f);
+    const int s = voxelsPerCell_;
+    auto accessor = grid.voxels().grid->getConstAccessor();
+    for (int k = 0; k < n_.z; ++k)
+        for (int j = 0; j < n_.y; ++j)
+            for (int i = 0; i < n_.x; ++i) {
+                if (!(most[index({i, j, k})] > 0)) continue;
+                const openvdb::Coord lo(int(origin.x) + s * i - 1, int(origin.y) + s * j - 1, int(origin.z) + s * k - 1);
+                const openvdb::CoordBBox box(lo, lo.offsetBy(s + 2));
+                float m = std::numeric_limits<float>::infinity();
+                for (auto c = box.begin(); c && m > 0; ++c) {
+                    float v;
+                    m = accessor.probeValue(*c, v) ? std::min(m, v) : 0.0f;
+                }
+                least[index({i, j, k})] = std::max(0.0f, m);
+            }
+    return least;
+}
+
+std::optional<std::size_t> MajorantGrid::cellOf(const dvec3& p) const {
     const dvec3 c = cellFromWorld_ * p + cellOffset_;
-    if (majorants_.empty() || !(c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x <= n_.x && c.y <= n_.y && c.z <= n_.z)) return 0;
-    return at(glm::min(glm::ivec3(glm::floor(c)), n_ - 1));
+    if (majorants_.empty() || !(c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x <= n_.x && c.y <= n_.y && c.z <= n_.z))
+        return std::nullopt;
+    return index(glm::min(glm::ivec3(glm::floor(c)), n_ - 1));
+}
+
+double MajorantGrid::majorant(const dvec3& p) const {
+    auto cell = cellOf(p);
+    return cell ? majorants_[*cell] : 0.0;
+}
+
+double MajorantGrid::minorant(const dvec3& p) const {
+    auto cell = cellOf(p);
+    return cell ? minorants_[*cell] : 0.0;
 }
 
 }  // namespace brume

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "geometry/ray.h"
@@ -20,16 +22,24 @@ namespace brume {
 // kMaxCells cells. Each cell holds the largest density that trilinear interpolation of any of the grids
 // reaches in it — the largest voxel whose interpolation support (one voxel each side of its centre) meets the
 // cell — which also bounds any convex combination of the grids, such as linear interpolation in time.
+// Each cell also holds a lower bound (minorant): the smallest voxel whose support meets the cell, 0 where an
+// inactive voxel does, over all the grids (0 unless they share the first grid's transform). Residual ratio
+// tracking takes the smoke below it in closed form and tracks only the rest.
 class MajorantGrid {
 public:
     static constexpr int kMaxCells = 1 << 18;
+    // Cells larger than this many voxels a side get minorant 0 (finding one reads every voxel around a cell).
+    static constexpr int kMaxMinorantCell = 32;
 
-    explicit MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell = 8);
+    // Bounds of every convex combination of `grids`, or, given `weights` (one per grid), of that one sum.
+    explicit MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell = 8,
+                          std::span<const double> weights = {});
     explicit MajorantGrid(const DensityGrid& grid, int voxelsPerCell = 8)
         : MajorantGrid(std::span(&grid, 1), voxelsPerCell) {}
 
     // The majorant at world point p: that of its cell, 0 outside the grid.
     double majorant(const dvec3& p) const;
+    double minorant(const dvec3& p) const;
 
     // Walks ray.at(t) for t in [tmin, tmax] (ray.tmin and ray.tmax are not used) and calls
     // callback(t0, t1, majorant) -> bool (false stops the walk) for consecutive segments, in order, that
@@ -38,12 +48,19 @@ public:
     // the grid gives no segment; outside the grid the density is 0.
     template <typename Callback>
     void forEachSegment(const Ray& ray, double tmin, double tmax, Callback&& callback) const;
+    // The same walk with callback(t0, t1, majorant, minorant): consecutive cells merge when both are equal.
+    template <typename Callback>
+    void forEachBound(const Ray& ray, double tmin, double tmax, Callback&& callback) const;
 
     glm::ivec3 resolution() const { return n_; }
     int voxelsPerCell() const { return voxelsPerCell_; }
 
 private:
-    float at(const glm::ivec3& c) const { return majorants_[(std::size_t(c.z) * n_.y + c.y) * n_.x + c.x]; }
+    std::size_t index(const glm::ivec3& c) const { return (std::size_t(c.z) * n_.y + c.y) * n_.x + c.x; }
+    // The cell holding world point p, or nothing outside the grid.
+    std::optional<std::size_t> cellOf(const dvec3& p) const;
+    std::vector<float> cellMaxima(const DensityGrid& grid, const glm::dmat4& cellFromIndex) const;
+    std::vector<float> cellMinima(const DensityGrid& grid, const std::vector<float>& most, const dvec3& origin) const;
 
     // World to cell space, where cell (i, j, k) is the unit cube at (i, j, k) and the grid is [0, n].
     // Affine, so a ray's t is the same in both.
@@ -51,11 +68,11 @@ private:
     dvec3 cellOffset_{0.0};
     glm::ivec3 n_{0};
     int voxelsPerCell_ = 0;
-    std::vector<float> majorants_;
+    std::vector<float> majorants_, minorants_;
 };
 
 template <typename Callback>
-void MajorantGrid::forEachSegment(const Ray& ray, double tmin, double tmax, Callback&& callback) const {
+void MajorantGrid::forEachBound(const Ray& ray, double tmin, double tmax, Callback&& callback) const {
     if (majorants_.empty()) return;
     const dvec3 o = cellFromWorld_ * ray.org + cellOffset_, d = cellFromWorld_ * ray.dir;
     constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -80,7 +97,8 @@ void MajorantGrid::forEachSegment(const Ray& ray, double tmin, double tmax, Call
         tNext[a] = step[a] ? (cell[a] + (step[a] > 0) - o[a]) / d[a] : kNever;
     }
     double t0 = tmin;
-    float majorant = at(cell);
+    std::size_t at = index(cell);
+    float majorant = majorants_[at], minorant = minorants_[at];
     for (;;) {
         const double t1 = std::min({tNext.x, tNext.y, tNext.z});
         if (t1 >= tmax) break;
@@ -92,15 +110,32 @@ void MajorantGrid::forEachSegment(const Ray& ray, double tmin, double tmax, Call
                 tNext[a] = (cell[a] + (step[a] > 0) - o[a]) / d[a];
             }
         if (!inside) break;  // rounding: left the grid a hair before the clipped tmax
-        const float next = at(cell);
-        if (next == majorant) continue;
+        at = index(cell);
+        if (majorants_[at] == majorant && minorants_[at] == minorant) continue;
         if (t1 > t0) {  // a cell crossed in zero length (rounding at an edge) is dropped
-            if (!callback(t0, t1, double(majorant))) return;
+            if (!callback(t0, t1, double(majorant), double(minorant))) return;
             t0 = t1;
         }
-        majorant = next;
+        majorant = majorants_[at], minorant = minorants_[at];
     }
-    callback(t0, tmax, double(majorant));
+    callback(t0, tmax, double(majorant), double(minorant));
+}
+
+template <typename Callback>
+void MajorantGrid::forEachSegment(const Ray& ray, double tmin, double tmax, Callback&& callback) const {
+    // Stretches of equal majorant but different minorants are one segment here.
+    double t0 = 0, t1 = 0, majorant = -1;
+    bool going = true;
+    forEachBound(ray, tmin, tmax, [&](double a, double b, double m, double) {
+        if (m == majorant) {
+            t1 = b;
+            return true;
+        }
+        if (majorant >= 0 && !(going = callback(t0, t1, majorant))) return false;
+        t0 = a, t1 = b, majorant = m;
+        return true;
+    });
+    if (going && majorant >= 0) callback(t0, t1, majorant);
 }
 
 }  // namespace brume

@@ -48,20 +48,22 @@ dvec3 uniformIn(const Bounds3& b, Random& random) {
 }
 
 // Random points and random rays with random samples along their segments: the majorant is never below the
-// interpolated density.
+// interpolated density, the minorant never above it.
 void expectBounds(const DensityGrid& density, const MajorantGrid& majorant, int samples) {
     Random random(7);
     Bounds3 b = density.bounds();
     for (int i = 0; i < samples; ++i) {
         const dvec3 p = uniformIn(b, random);
         ASSERT_GE(majorant.majorant(p), density.density(p)) << p.x << " " << p.y << " " << p.z;
+        ASSERT_LE(majorant.minorant(p), density.density(p)) << p.x << " " << p.y << " " << p.z;
     }
     for (int i = 0; i < samples / 100; ++i) {
         const dvec3 o = uniformIn(b, random), d = glm::normalize(uniformIn(b, random) - o);
-        majorant.forEachSegment(Ray(o, d), -1e9, 1e9, [&](double t0, double t1, double m) {
+        majorant.forEachBound(Ray(o, d), -1e9, 1e9, [&](double t0, double t1, double most, double least) {
             for (int k = 0; k < 10; ++k) {
                 const dvec3 p = o + (t0 + random.uniform() * (t1 - t0)) * d;
-                EXPECT_GE(m, density.density(p));
+                EXPECT_GE(most, density.density(p));
+                EXPECT_LE(least, density.density(p));
             }
             return true;
         });

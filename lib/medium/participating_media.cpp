@@ -87,6 +87,13 @@ void ParticipatingMedia::majorants(const Ray& ray, double start, double end, con
     std::erase_if(out, [](const MajorantSegment& s) { return !(s.majorant > 0) || !(s.t1 > s.t0); });
 }
 
+Spectrum ParticipatingMedia::smokeTransmittance(const Ray& ray, double start, double end, Random& random) const {
+    Spectrum t(1.f);
+    for (const SmokeVolume& v : smoke_)
+        if (!t.isBlack() && crosses(v.bounds(), ray, start, end)) t *= v.transmittance(ray, start, end, random);
+    return t;
+}
+
 Spectrum ParticipatingMedia::smokeExtinction(const dvec3& p) const {
     Spectrum sum(0.f);
     for (const SmokeVolume& v : smoke_) sum += v.extinction(p);

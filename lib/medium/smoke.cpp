@@ -1,5 +1,7 @@
 #include "medium/smoke.h"
 
+#include "medium/null_collisions.h"
+
 #include <charconv>
 #include <cmath>
 #include <span>
@@ -78,12 +80,35 @@ SmokeDescription readSmoke(const SceneObject& o) {
 SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsPerCell)
     : description_(smoke),
       time_(time),
-      majorant_(smoke.frames->majorant(time, time, voxelsPerCell > 0 ? voxelsPerCell : 1 << 24)),
+      majorant_(smoke.frames->boundsAt(time, voxelsPerCell > 0 ? voxelsPerCell : 1 << 24)),
       bounds_(smoke.frames->bounds()),
       // One float ulp above the largest band: extinction() rounds K·ρ to float, which may exceed K·ρ by
       // half an ulp, and the majorant must still bound it.
       scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)) {}
 
 double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
+
+Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax, Random& random) const {
+    thread_local std::vector<MajorantSegment> residual;
+    thread_local std::vector<double> lower;
+    residual.clear(), lower.clear();
+    double controlDepth = 0;  // ∫ minorant dt, in density units
+    majorant_.forEachBound(ray, tmin, tmax, [&](double t0, double t1, double majorant, double minorant) {
+        if (majorant > 0) {
+            residual.push_back({t0, t1, (majorant - minorant) * scale_});
+            lower.push_back(minorant);
+            controlDepth += minorant * (t1 - t0);
+        }
+        return true;
+    });
+    const Spectrum& k = description_.extinctionPerDensity;
+    size_t at = 0;
+    Spectrum t = ratioTracking(residual, [&](double s) {
+        while (residual[at].t1 < s) ++at;  // collisions come in order along the ray
+        return k * float(std::max(0.0, density(ray.org + s * ray.dir) - lower[at]));
+    }, random);
+    for (int i = 0; i < t.size(); ++i) t[i] *= float(std::exp(-double(k[i]) * controlDepth));
+    return t;
+}
 
 }  // namespace brume

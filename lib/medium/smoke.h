@@ -5,6 +5,7 @@
 
 #include "medium/grid_sequence.h"
 #include "medium/majorant_grid.h"
+#include "sampling/random.h"
 #include "scene/scene.h"
 #include "spectrum/spectrum.h"
 
@@ -45,6 +46,11 @@ public:
     void forEachSegment(const Ray& ray, double tmin, double tmax, F&& f) const {
         majorant_.forEachSegment(ray, tmin, tmax, [&](double t0, double t1, double m) { return f(t0, t1, m * scale_); });
     }
+
+    // exp(−∫σ_t) between tmin and tmax, per band, without bias: residual ratio tracking (Novák, Selle and
+    // Jarosz 2014) — the smoke below each cell's minorant in closed form, ratio tracking of the rest — so
+    // that smoke of even density costs no noise.
+    Spectrum transmittance(const Ray& ray, double tmin, double tmax, Random& random) const;
 
 private:
     SmokeDescription description_;
