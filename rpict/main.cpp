@@ -151,7 +151,15 @@ private:
         fitPictureResolution(f.view, p);
         RenderSettings settings = o_.render;
         settings.time = f.time;
-        Integrator integrator(renderScene_, settings, cache_);  // later frames reuse the records of earlier ones
+        // Later frames reuse the records of earlier ones, made at the same instant: smoke that evolves
+        // changes the light everywhere.
+        if (cache_ && renderScene_.variesInTime() && f.time != cacheTime_) {
+            if (cacheFile_) throw Error("-af: the smoke changes in time and frames have other instants than -T: "
+                                        "one cache file cannot serve them");
+            cache_ = makeCache(renderScene_, settings);
+            cacheTime_ = f.time;
+        }
+        Integrator integrator(renderScene_, settings, cache_);
         RenderedPicture r = renderPicture(integrator, f.view, p, &progress_);
         if (cacheFile_) cacheFile_->sync();
         if (cache_ && o_.reportInterval > 0) std::fprintf(stderr, "rpict: irradiance cache: %s\n", cache_->summary().c_str());
@@ -168,6 +176,7 @@ private:
     std::vector<std::string> command_;
     ProgressMeter progress_;
     std::shared_ptr<IrradianceCache> cache_;
+    std::optional<double> cacheTime_ = o_.render.time;  // the instant cache_'s records were made at
     std::unique_ptr<PersistentCache> cacheFile_;
     int framesOnOutput_ = 0;
 };

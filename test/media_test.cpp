@@ -13,6 +13,7 @@
 #include "medium/testing.h"
 #include "ray_path_dir.h"
 #include "scene_text.h"
+#include "spectral_sampling_scope.h"
 
 namespace brume {
 namespace {
@@ -247,6 +248,19 @@ TEST(Smoke, AlbedoOneSmokeInAFurnaceChangesNothing) {
         Integrator integrator(t.render, s);
         EXPECT_NEAR(meanRadiance(integrator, {dvec3(5, 5, 5), glm::normalize(dvec3(.3, .5, .8))}, 20000)[0], 1.0, 0.01) << sigma;
     }
+}
+
+// A spectrum modifying a smoke makes its extinction spectral: K(λ) = K·s(λ). In 6 bands of 50 nm over 400–700 nm,
+// s = 2 below 550 nm and 1 above: each band's transmittance is e^{−7·.1·s}, exactly (even smoke; bands of equal
+// width, longest first).
+TEST(Smoke, SpectrumModifierMakesExtinctionSpectral) {
+    SpectralSamplingScope bands(6, 400, 700);
+    RayPathDir dir;
+    writeBox(dir, "even.vdb", 1.0f);
+    TestScene t(kPanel + "void spectrum soot 0 0 6 437.5 662.5 2 2 1 1\nsoot smoke s 1 even.vdb 0 3 .1 .1 .1\n");
+    Spectrum v = Integrator(t.render, settings("")).trace(kView.org, kView.dir, 0).value;
+    ASSERT_EQ(v.size(), 6);
+    for (int b = 0; b < 6; ++b) EXPECT_NEAR(v[b], std::exp(-0.7 * (b < 3 ? 1 : 2)), 1e-5) << "band " << b;
 }
 
 // Key frames of density 1 (t = 10 s) and 3 (t = 20 s): -T picks the instant, density linear in between and held

@@ -441,3 +441,41 @@ TEST_F(RtraceCli, IllegalPrimariesAreRefused) {
     EXPECT_EQ(r.out, "");
     EXPECT_NE(r.err.find("illegal primary chromaticities"), std::string::npos) << r.err;
 }
+
+// Media options and objects that cannot work are refused with what is wrong; an unknown source in a mist's
+// list is a warning, as in Radiance.
+TEST_F(RtraceCli, BadMediaAreRefused) {
+    const std::pair<const char*, const char*> options[] = {
+        {"-me -1 0 0", "rtrace: -me: extinction coefficients must be positive or 0\n"},
+        {"-ma 1.5 1 1", "rtrace: -ma: albedo must be between 0 and 1\n"},
+        {"-mg 1", "rtrace: -mg: eccentricity must be between -1 and 1\n"},
+        {"-ms -1", "rtrace: -ms: sampling distance must be positive or 0\n"},
+        {"-mc -1", "rtrace: -mc: majorant cell size must be positive or 0\n"}};
+    for (auto [opt, message] : options) {
+        Output r = rtrace(std::string(opt) + " s.rad", "0 0 1 0 0 -1\n");
+        EXPECT_NE(r.status, 0) << opt;
+        EXPECT_EQ(r.out, "") << opt;
+        EXPECT_EQ(r.err, message) << opt;
+    }
+    const std::pair<const char*, const char*> scenes[] = {
+        {"void mist m 0 0 8 1 1 1 1 1 1 1 1\n", "rtrace: m.rad:1: bad mist 'm': expected 0 to 7 reals\n"},
+        {"void mist m 0 0 3 -1 0 0\n", "rtrace: m.rad:1: bad mist 'm': extinction must be positive or 0\n"},
+        {"void mist m 0 0 6 1 1 1 2 1 1\n", "rtrace: m.rad:1: bad mist 'm': albedo must be between 0 and 1\n"},
+        {"void mist m 0 0 7 1 1 1 1 1 1 -1\n", "rtrace: m.rad:1: bad mist 'm': eccentricity g must be between -1 and 1\n"},
+        {"void colorfunc b 4 1 1 1 . 0 0\nb mist m 0 0 3 1 1 1\n",
+         "rtrace: m.rad:2: patterns on mist \"m\" are not supported by Brume yet\n"},
+        {"void plastic p 0 0 5 1 1 1 0 0\np smoke s 1 x.vdb 0 3 1 1 1\n",
+         "rtrace: m.rad:2: modifier 'p' of smoke 's' is a plastic: expected a spectrum, specfile or specfunc\n"}};
+    for (auto [text, message] : scenes) {
+        writeScene("m.rad", text);
+        Output r = rtrace("m.rad", "0 0 1 0 0 -1\n");
+        EXPECT_NE(r.status, 0) << text;
+        EXPECT_EQ(r.out, "") << text;
+        EXPECT_EQ(r.err, message) << text;
+    }
+    writeScene("m.rad", "void mist m 2 lamp nowhere 0 0\nm sphere s 0 0 4 0 0 0 1\n"
+                        "void light l 0 0 3 1 1 1\nl sphere lamp 0 0 4 0 0 5 .1\n");
+    Output r = rtrace("-h m.rad", "0 0 -2 0 0 1\n");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "rtrace: warning - m.rad:1: unknown source \"nowhere\" in mist \"m\"\n");
+}

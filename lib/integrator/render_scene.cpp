@@ -134,12 +134,12 @@ void RenderScene::addMists() {
 void RenderScene::addSmoke() {
     for (const SceneObject& o : scene_.objects) {
         if (o.type != "smoke") continue;
+        const SceneObject* m = o.modifier >= 0 ? &scene_.objects[o.modifier] : nullptr;
+        if (m && m->type != "spectrum" && m->type != "specfile" && m->type != "specfunc")
+            throw Error(o.where, "modifier '" + m->name + "' of smoke '" + o.name + "' is a " + m->type +
+                                     ": expected a spectrum, specfile or specfunc");
         SmokeDescription smoke = readSmoke(o);
-        if (o.modifier >= 0) {
-            const SceneObject& m = scene_.objects[o.modifier];
-            if (m.type != "spectrum" && m.type != "specfile" && m.type != "specfunc")
-                throw Error(o.where, "modifier '" + m.name + "' of smoke '" + o.name +
-                                         "' is a " + m.type + ": expected a spectrum, specfile or specfunc");
+        if (m) {
             PatternEvaluator evaluator(*modifiers_);
             PatternHit origin{dvec3(0), dvec3(0, 0, 1), dvec3(0, 0, 1)};
             smoke.extinctionPerDensity *= modifiers_->resolve(o.modifier, origin, evaluator, 0.5).texturing.color;

@@ -1,6 +1,7 @@
 // The scene compiled for rendering: exact geometry in Embree, the material or emitter of every surface,
 // and the light sources for next-event estimation.
 #pragma once
+#include <algorithm>
 #include <deque>
 #include <memory>
 #include <unordered_map>
@@ -69,6 +70,10 @@ public:
     bool hasMists() const { return !mists_.empty(); }
     // The scene's smoke objects, their extinction times their spectrum modifier.
     const std::vector<SmokeDescription>& smoke() const { return smoke_; }
+    // Whether the scene looks different at different instants (-T): smoke with several key frames.
+    bool variesInTime() const {
+        return std::any_of(smoke_.begin(), smoke_.end(), [](const SmokeDescription& s) { return s.frames->keyFrames().size() > 1; });
+    }
     // The light that samples a surface, or -1.
     int lightOfSurface(const SurfaceId& id) const;
     const std::vector<PlanarMirror>& planarMirrors() const { return mirrors_; }
