@@ -37,9 +37,9 @@ Spectrum Integrator::throughMedia(const Ray& ray, const std::optional<SurfaceHit
         if (misEmission) *misEmission += mis * weight;
         return value;
     };
-    bool scatters = media_.scatters(h);
+    bool scatters = media_.scatters(h), emits = media_.emits();
     bool answer = state.kind != PathState::Kind::Sampled && state.ambientLevel == 0;
-    if (scatters && !answer) {
+    if ((scatters || emits) && !answer) {
         std::vector<MajorantSegment> segments;
         media_.majorants(ray, start, end, &h, segments);
         auto extinction = [&](double t) { return h.extinction + media_.smokeExtinction(ray.org + t * ray.dir); };
@@ -47,13 +47,16 @@ Spectrum Integrator::throughMedia(const Ray& ray, const std::optional<SurfaceHit
         auto collision = deltaTracking(segments, extinction, weight, ctx.rng);
         if (!collision) return weight.isBlack() ? weight : behind(weight);
         dvec3 point = ray.org + *collision * ray.dir;
-        PhaseMixture phase;  // σ_s · weight / σ_t: the collision's albedo times what tracking carried
-        media_.scattering(point, h, weight / extinction(*collision), phase);
-        return scattered(point, ray.dir, phase, state, ctx);
+        Spectrum carried = weight / extinction(*collision);  // times σ_s: the albedo times what tracking carried
+        Spectrum value = emits ? media_.emission(point) * carried : Spectrum(0.f);
+        PhaseMixture phase;
+        media_.scattering(point, h, carried, phase);
+        if (!phase.empty()) value += scattered(point, ray.dir, phase, state, ctx);
+        return value;
     }
     Spectrum t = mediaTransmittance(ray, start, end, h, ctx);
     Spectrum value = t.isBlack() ? t : behind(t);
-    if (scatters) value += inScattered(ray, start, end, h, state, ctx);
+    if (scatters || emits) value += inScattered(ray, start, end, h, state, ctx);
     return value;
 }
 
@@ -77,7 +80,7 @@ int Integrator::inScatteringSamples(double length) const {
     return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
 }
 
-// ∫ T(t) σ_s(t) L_s(t) dt over [start, end], stratified, at points forced into the medium (ForcedCollision)
+// ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), stratified, at points forced into the medium (ForcedCollision)
 // by the majorant of the largest band or of the clearest one, half the points each, weighed by the mixture of
 // both densities (one-sample MIS): clear bands see far, dense ones near, and T_λ σ_s / density stays bounded
 // in every band. In a grey homogeneous medium that ratio is a constant: only L_s is sampled.
@@ -104,8 +107,10 @@ Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const
         Spectrum tr = mediaTransmittance(ray, start, t, h, ctx);
         if (tr.isBlack()) continue;
         dvec3 point = ray.org + t * ray.dir;
+        Spectrum weight = tr * float(1 / (density * n));
+        if (media_.emits()) sum += media_.emission(point) * weight;
         PhaseMixture phase;
-        media_.scattering(point, h, tr * float(1 / (density * n)), phase);
+        media_.scattering(point, h, weight, phase);
         if (!phase.empty()) sum += scattered(point, ray.dir, phase, state, ctx);
     }
     return sum;

@@ -94,6 +94,17 @@ Spectrum ParticipatingMedia::smokeTransmittance(const Ray& ray, double start, do
     return t;
 }
 
+bool ParticipatingMedia::emits() const {
+    return std::any_of(smoke_.begin(), smoke_.end(), [](const SmokeVolume& v) { return v.emits(); });
+}
+
+Spectrum ParticipatingMedia::emission(const dvec3& p) const {
+    Spectrum sum(0.f);
+    for (const SmokeVolume& v : smoke_)
+        if (v.emits()) sum += v.emission(p);
+    return sum;
+}
+
 Spectrum ParticipatingMedia::smokeExtinction(const dvec3& p) const {
     Spectrum sum(0.f);
     for (const SmokeVolume& v : smoke_) sum += v.extinction(p);

@@ -20,6 +20,10 @@ public:
     bool hasSmoke() const { return !smoke_.empty(); }
     // Whether some smoke may lie on the ray between t = start and t = end (its grid's box is crossed).
     bool smokeAlong(const Ray& ray, double start, double end) const;
+    // Whether some smoke is a flame (has a temperature).
+    bool emits() const;
+    // What the flames emit per unit length at p (see SmokeVolume::emission).
+    Spectrum emission(const dvec3& p) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
     bool scatters(const HomogeneousMedium& h) const;
 

@@ -2,11 +2,13 @@
 
 #include "medium/null_collisions.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <span>
 
 #include "scene/raypath.h"
+#include "spectrum/blackbody.h"
 #include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
@@ -35,17 +37,12 @@ double keyFrameTime(const SceneObject& o, const std::string& word) {
     return t;
 }
 
-// The strings: [density=NAME] then one file (static smoke), or pairs of a time and a file.
-std::shared_ptr<const GridSequence> readFrames(const SceneObject& o) {
-    std::span<const std::string> words = o.strings;
-    std::string gridName = "density";
-    if (!words.empty() && words[0].starts_with("density=")) {
-        gridName = words[0].substr(std::string_view("density=").size());
-        if (gridName.empty()) badSmoke(o, "empty grid name in 'density='");
-        words = words.subspan(1);
-    }
+// The key frames of grid `gridName` in the files the strings name after their keywords: one file (static
+// smoke), or pairs of a time and a file.
+std::shared_ptr<const GridSequence> readFrames(const SceneObject& o, std::span<const std::string> words,
+                                               const std::string& gridName) {
     if (words.empty() || (words.size() > 1 && words.size() % 2 != 0))
-        badSmoke(o, "expected [density=NAME] then one file, or key frames as time and file pairs");
+        badSmoke(o, "expected [density=NAME] [temperature=NAME] then one file, or key frames as time and file pairs");
     std::vector<KeyFrame> frames;
     if (words.size() == 1) frames.push_back({0, loadGrid(o, words[0], gridName)});
     else
@@ -73,7 +70,19 @@ SmokeDescription readSmoke(const SceneObject& o) {
     smoke.extinctionPerDensity = spectrumFromRgb(r[0], r[1], r[2]);
     smoke.albedo = r.size() >= 6 ? spectrumFromRgb(r[3], r[4], r[5]) : Spectrum(0.f);
     smoke.g = g;
-    smoke.frames = readFrames(o);  // last: the arguments are checked before any file is read
+    // Last: the arguments are checked before any file is read.
+    std::span<const std::string> words = o.strings;
+    std::string density = "density", temperature;
+    for (; !words.empty() && words[0].find('=') != std::string::npos; words = words.subspan(1)) {
+        const std::string& w = words[0];
+        std::string value = w.substr(w.find('=') + 1);
+        if (w.starts_with("density=")) density = value;
+        else if (w.starts_with("temperature=")) temperature = value;
+        else badSmoke(o, "unknown keyword '" + w + "' (density=, temperature=)");
+        if (value.empty()) badSmoke(o, "empty grid name in '" + w + "'");
+    }
+    smoke.frames = readFrames(o, words, density);
+    if (!temperature.empty()) smoke.temperature = readFrames(o, words, temperature);
     return smoke;
 }
 
@@ -84,9 +93,20 @@ SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsP
       bounds_(smoke.frames->bounds()),
       // One float ulp above the largest band: extinction() rounds K·ρ to float, which may exceed K·ρ by
       // half an ulp, and the majorant must still bound it.
-      scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)) {}
+      scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)) {
+    if (emits())
+        for (double kelvin = 0; kelvin <= kHottest; kelvin += kBlackbodyStep) blackbodies_.push_back(blackbody(kelvin));
+}
 
 double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
+
+Spectrum SmokeVolume::emission(const dvec3& p) const {
+    double kelvin = std::clamp(description_.temperature->density(p, time_), 0.0, kHottest) / kBlackbodyStep;
+    std::size_t i = std::min(std::size_t(kelvin), blackbodies_.size() - 2);
+    float w = float(kelvin - double(i));
+    Spectrum b = blackbodies_[i] * (1 - w) + blackbodies_[i + 1] * w;
+    return b * extinction(p) * (Spectrum(1.f) - description_.albedo);
+}
 
 Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax, Random& random) const {
     thread_local std::vector<MajorantSegment> residual;

@@ -2,6 +2,7 @@
 // participating medium: extinction per unit density (K_m for soot in kg/m³), scattering albedo, Henyey–Greenstein g.
 #pragma once
 #include <memory>
+#include <vector>
 
 #include "medium/grid_sequence.h"
 #include "medium/majorant_grid.h"
@@ -17,6 +18,8 @@ struct SmokeDescription {
     Spectrum extinctionPerDensity;  // σ_t per unit density, per band of the current spectral sampling
     Spectrum albedo;                // σ_s / σ_t
     double g = 0;                   // Henyey–Greenstein mean cosine (> 0 forward)
+    // Flames: temperature (K) at the same key frames, or null. What the smoke absorbs it emits as a black body.
+    std::shared_ptr<const GridSequence> temperature;
 };
 
 // Reads a `smoke` object's arguments (see rtrace(1), "Smoke") and loads its grids, found along RAYPATH:
@@ -37,6 +40,10 @@ public:
     double density(const dvec3& p) const;
     // σ_t at p, per band.
     Spectrum extinction(const dvec3& p) const { return description_.extinctionPerDensity * float(density(p)); }
+    bool emits() const { return description_.temperature != nullptr; }
+    // What the smoke emits per unit length at p: σ_a(p)·B(T(p)), B Planck's radiance (as emitted light adds
+    // along a ray: ∫ T σ_a B dt).
+    Spectrum emission(const dvec3& p) const;
     const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
     const Spectrum& albedo() const { return description_.albedo; }
     double g() const { return description_.g; }
@@ -58,6 +65,9 @@ private:
     MajorantGrid majorant_;
     Bounds3 bounds_;
     double scale_;  // the largest band of extinctionPerDensity
+    // Black bodies every kBlackbodyStep kelvin from 0 (interpolated between): Planck per sample costs too much.
+    static constexpr double kBlackbodyStep = 25, kHottest = 6000;
+    std::vector<Spectrum> blackbodies_;
 };
 
 }  // namespace brume

@@ -94,7 +94,7 @@ TEST(Smoke, GreyExtinctionStaysExactlyFlatInEveryBandCount) {
 TEST(Smoke, EveryMalformedSmokeIsAnErrorAtItsLine) {
     RayPathDir dir;
     writeGrid(dir.path() / "box.vdb", boxGrid({0, 0, 0}, {1, 1, 1}, 1.0f));
-    const std::string strings = "expected [density=NAME] then one file, or key frames as time and file pairs";
+    const std::string strings = "expected [density=NAME] [temperature=NAME] then one file, or key frames as time and file pairs";
     const std::string reals = "expected 3, 6 or 7 reals";
     const std::string noSoot = (dir.path() / "box.vdb").string() + ": no grid \"soot\" (the file holds \"density\")";
     const std::pair<std::string, std::string> cases[] = {  // object's arguments, what is wrong
@@ -102,6 +102,8 @@ TEST(Smoke, EveryMalformedSmokeIsAnErrorAtItsLine) {
         {"1 density=soot 0 3 1 1 1", strings},
         {"3 0 box.vdb 10 0 3 1 1 1", strings},
         {"2 density= box.vdb 0 3 1 1 1", "empty grid name in 'density='"},
+        {"2 temperature= box.vdb 0 3 1 1 1", "empty grid name in 'temperature='"},
+        {"2 heat=t box.vdb 0 3 1 1 1", "unknown keyword 'heat=t' (density=, temperature=)"},
         {"4 0 box.vdb soon box.vdb 0 3 1 1 1", "bad key-frame time 'soon'"},
         {"4 0 box.vdb inf box.vdb 0 3 1 1 1", "bad key-frame time 'inf'"},
         {"4 0 box.vdb 5s box.vdb 0 3 1 1 1", "bad key-frame time '5s'"},
