@@ -80,29 +80,38 @@ int Integrator::inScatteringSamples(double length) const {
     return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
 }
 
-// ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), stratified, at points forced into the medium (ForcedCollision)
-// by the majorant of the largest band or of the clearest one, half the points each, weighed by the mixture of
-// both densities (one-sample MIS): clear bands see far, dense ones near, and T_λ σ_s / density stays bounded
-// in every band. In a grey homogeneous medium that ratio is a constant: only L_s is sampled.
+// ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), stratified,
+// at points drawn by a mixture of strategies, weighed by the mixture's density (one-sample MIS): forced into
+// the medium (ForcedCollision) by the majorant of the largest band, and of the clearest one (clear bands see
+// far, dense ones near, and T_λ σ_s / density stays bounded in every band), and uniform in length with half
+// the share of the ray where the majorant exceeds the extinction (smoke's cells): drawn by such a majorant
+// alone, light deep in thin smoke would come from rare draws of huge weight. Where the majorant is the
+// extinction (a homogeneous medium, even smoke), T σ_s / density is a constant: only L_s is sampled.
 Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                  const PathState& state, Context& ctx) const {
     std::vector<MajorantSegment> dense, clear;
     media_.majorants(ray, start, end, &h, dense);
     media_.majorants(ray, start, end, &h, clear, ParticipatingMedia::Band::Smallest);
     ForcedCollision near(dense), far(clear);
+    UniformCollision even(dense);
     if (!(near.reach() > 0)) return Spectrum(0.f);
     bool mixed = far.reach() > 0 && !std::equal(dense.begin(), dense.end(), clear.begin(), clear.end(),
                                                 [](const MajorantSegment& a, const MajorantSegment& b) {
                                                     return a.t0 == b.t0 && a.t1 == b.t1 && a.majorant == b.majorant;
                                                 });
-    double length = 0;
-    for (const MajorantSegment& s : dense) length += s.t1 - s.t0;
-    int n = inScatteringSamples(length);
+    double loose = 0;
+    for (const MajorantSegment& s : dense)  // (the bounds' own rounding is not looseness)
+        if (s.minorant < s.majorant * (1 - 1e-5)) loose += s.t1 - s.t0;
+    double uniform = std::isfinite(even.length()) ? 0.5 * loose / even.length() : 0;  // none out to infinity
+    int n = inScatteringSamples(even.length());
     Spectrum sum(0.f);
     for (int k = 0; k < n; ++k) {
         double u = (k + ctx.rng.uniform()) / n;
-        double t = mixed && ctx.rng.uniform() < 0.5 ? far.sample(u) : near.sample(u);
-        double density = mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t);
+        double pick = uniform > 0 || mixed ? ctx.rng.uniform() : 1;
+        double t = pick < uniform ? even.sample(u) : mixed && pick < uniform + 0.5 * (1 - uniform) ? far.sample(u)
+                                                                                                  : near.sample(u);
+        double density = uniform * even.density(t) +
+                         (1 - uniform) * (mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t));
         if (!(density > 0)) continue;
         Spectrum tr = mediaTransmittance(ray, start, t, h, ctx);
         if (tr.isBlack()) continue;

@@ -47,3 +47,36 @@ private:
 };
 
 }  // namespace brume
+
+namespace brume {
+
+// Distances drawn uniformly over the length `segments` cover (their majorants ignored): a density that
+// never falls below 1/length, mixed with ForcedCollision where a majorant may exceed the extinction by far
+// (smoke's cells), so that the light of smoke deep behind a loose majorant is not left to rare, huge weights.
+class UniformCollision {
+public:
+    explicit UniformCollision(std::span<const MajorantSegment> segments) : segments_(segments) {
+        for (const MajorantSegment& s : segments) length_ += s.t1 - s.t0;
+    }
+
+    double length() const { return length_; }
+    double sample(double u) const {
+        double target = u * length_;
+        for (const MajorantSegment& s : segments_) {
+            if (target <= s.t1 - s.t0 || &s == &segments_.back()) return std::min(s.t0 + target, s.t1);
+            target -= s.t1 - s.t0;
+        }
+        return 0;
+    }
+    double density(double t) const {
+        for (const MajorantSegment& s : segments_)
+            if (t >= s.t0 && t <= s.t1) return 1 / length_;
+        return 0;
+    }
+
+private:
+    std::span<const MajorantSegment> segments_;
+    double length_ = 0;
+};
+
+}  // namespace brume

@@ -56,13 +56,19 @@ MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell
 
     const dvec3 origin = glm::floor(covered.lo);
     const auto cellsOf = [&](int size) { return glm::max(glm::ceil((covered.hi - origin) / double(size)), 1.0); };
+    // The cell's edges in voxels: voxelsPerCell³, or with 0 the whole covered box as one cell.
+    dvec3 s = glm::max(glm::ceil(covered.hi - origin), 1.0);
     voxelsPerCell_ = voxelsPerCell;
-    for (dvec3 n = cellsOf(voxelsPerCell_); n.x * n.y * n.z > kMaxCells; n = cellsOf(voxelsPerCell_)) ++voxelsPerCell_;
-    n_ = glm::ivec3(cellsOf(voxelsPerCell_));
-    const double s = voxelsPerCell_;
+    if (voxelsPerCell_ > 0) {
+        for (dvec3 n = cellsOf(voxelsPerCell_); n.x * n.y * n.z > kMaxCells; n = cellsOf(voxelsPerCell_)) ++voxelsPerCell_;
+        n_ = glm::ivec3(cellsOf(voxelsPerCell_));
+        s = dvec3(voxelsPerCell_);
+    } else {
+        n_ = glm::ivec3(1);
+    }
     // Cell space from the first grid's index space: (index − origin) / s.
-    const glm::dmat4 cellFromReference = glm::dmat4(glm::dvec4(1 / s, 0, 0, 0), glm::dvec4(0, 1 / s, 0, 0),
-                                                    glm::dvec4(0, 0, 1 / s, 0), glm::dvec4(-origin / s, 1.0));
+    const glm::dmat4 cellFromReference = glm::dmat4(glm::dvec4(1 / s.x, 0, 0, 0), glm::dvec4(0, 1 / s.y, 0, 0),
+                                                    glm::dvec4(0, 0, 1 / s.z, 0), glm::dvec4(-origin / s, 1.0));
     const glm::dmat4 cellFromWorld = cellFromReference * referenceFromWorld;
     cellFromWorld_ = glm::dmat3(cellFromWorld);
     cellOffset_ = dvec3(cellFromWorld[3]);
@@ -71,7 +77,7 @@ MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell
     // smallest minimum; of the one weighted sum `weights` gives (an instant): the weighted sums.
     const bool shared = std::all_of(referenceFromIndex.begin(), referenceFromIndex.end(),
                                     [](const glm::dmat4& m) { return m == glm::dmat4(1.0); });
-    const bool withMinorants = shared && voxelsPerCell_ <= kMaxMinorantCell;
+    const bool withMinorants = shared && voxelsPerCell_ > 0 && voxelsPerCell_ <= kMaxMinorantCell;
     const std::size_t cells = std::size_t(n_.x) * n_.y * n_.z;
     majorants_.assign(cells, 0.0f);
     minorants_.assign(cells, weights.empty() ? std::numeric_limits<float>::infinity() : 0.0f);

@@ -19,7 +19,7 @@ namespace brume {
 
 // Cells are boxes of voxelsPerCell³ voxels of the first grid, aligned with its voxels (so in its index space,
 // rotated with it), over the union of the grids' bounds; the cell size grows when needed to keep at most
-// kMaxCells cells. Each cell holds the largest density that trilinear interpolation of any of the grids
+// kMaxCells cells; voxelsPerCell 0 makes one cell of that union (no empty space skipped inside it). Each cell holds the largest density that trilinear interpolation of any of the grids
 // reaches in it — the largest voxel whose interpolation support (one voxel each side of its centre) meets the
 // cell — which also bounds any convex combination of the grids, such as linear interpolation in time.
 // Each cell also holds a lower bound (minorant): the smallest voxel whose support meets the cell, 0 where an

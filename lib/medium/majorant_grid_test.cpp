@@ -80,6 +80,27 @@ TEST(MajorantGrid, BoxMajorantIsItsDensityInsideAndZeroOutside) {
     expectBounds(box, grid, 100000);
 }
 
+// voxelsPerCell 0: one cell, fitted to the support of a long box (voxels −1 … 40 by −1 … 10 by −1 … 5), with
+// the largest density; rays beside the box (in the cube its longest side would make) give no segment.
+TEST(MajorantGrid, OneCellIsTheGridsBoxAlone) {
+    auto grid = boxGrid({0, 0, 0}, {39, 9, 4}, 1.0f);
+    grid->tree().setValue({20, 5, 2}, 3.0f);
+    DensityGrid box = densityOf(grid);
+    MajorantGrid one(box, 0);
+    EXPECT_EQ(one.resolution(), glm::ivec3(1));
+    EXPECT_EQ(one.majorant({0, 0, 0}), 3.0);
+    EXPECT_EQ(one.majorant({39.9, 9.9, 4.9}), 3.0);
+    EXPECT_EQ(one.majorant({20, 12, 2}), 0.0);
+    EXPECT_EQ(one.majorant({20, 5, 7}), 0.0);
+    EXPECT_EQ(one.minorant({20, 5, 2}), 0.0);
+    EXPECT_TRUE(walk(one, Ray({-5, 20, 2}, {1, 0, 0}), 0, 100).empty());
+    const std::vector<Segment> across = walk(one, Ray({20, -5, 2}, {0, 1, 0}), 0, 100);
+    ASSERT_EQ(across.size(), 1u);
+    EXPECT_NEAR(across[0].t0, 4, 1e-12);
+    EXPECT_NEAR(across[0].t1, 15, 1e-12);
+    expectBounds(box, one, 10000);
+}
+
 TEST(MajorantGrid, WalkCoversTheGridPartOfTheSegmentOnceInOrder) {
     // Support −1 … 41 voxels of 1: cells from −1, 6 × 8 = 48 voxels: grid [−1, 47].
     DensityGrid box = densityOf(boxGrid({0, 0, 0}, {39, 39, 39}, 1.0f));

@@ -12,9 +12,10 @@
 
 namespace brume {
 
-// A stretch [t0, t1] of a ray over which σ̄ ≥ σ_t(t) in every band.
+// A stretch [t0, t1] of a ray over which σ̄ ≥ σ_t(t) in every band; `minorant` ≤ σ_t(t) in the band σ̄ bounds
+// (0 when unknown): where they are equal, σ̄ is the extinction itself.
 struct MajorantSegment {
-    double t0, t1, majorant;
+    double t0, t1, majorant, minorant = 0;
 };
 
 // Calls f(t, majorant) at each tentative collision along `segments` (free flights of rate σ̄ in each, which

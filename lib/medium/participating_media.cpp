@@ -31,15 +31,15 @@ void addSegments(std::vector<MajorantSegment>& sum, const std::vector<MajorantSe
         while (t < s.t1) {
             while (j < add.size() && add[j].t1 <= t) ++j;
             if (j == add.size() || add[j].t0 >= s.t1) {
-                scratch.push_back({t, s.t1, s.majorant});
+                scratch.push_back({t, s.t1, s.majorant, s.minorant});
                 break;
             }
             if (add[j].t0 > t) {
-                scratch.push_back({t, add[j].t0, s.majorant});
+                scratch.push_back({t, add[j].t0, s.majorant, s.minorant});
                 t = add[j].t0;
             }
             double end = std::min(s.t1, add[j].t1);
-            scratch.push_back({t, end, s.majorant + add[j].majorant});
+            scratch.push_back({t, end, s.majorant + add[j].majorant, s.minorant + add[j].minorant});
             t = end;
         }
     }
@@ -71,15 +71,16 @@ void ParticipatingMedia::majorants(const Ray& ray, double start, double end, con
                                    std::vector<MajorantSegment>& out, Band band) const {
     thread_local std::vector<MajorantSegment> smoke, scratch;
     out.clear();
-    out.push_back({start, end, h ? bandOf(h->extinction, band) : 0.0});
+    const double homogeneous = h ? bandOf(h->extinction, band) : 0.0;
+    out.push_back({start, end, homogeneous, homogeneous});
     for (const SmokeVolume& v : smoke_) {
         if (!crosses(v.bounds(), ray, start, end)) continue;
         const Spectrum& k = v.extinctionPerDensity();
         if (!(k.maxValue() > 0)) continue;
         double scale = band == Band::Largest ? 1.0 : bandOf(k, band) / bandOf(k, Band::Largest);
         smoke.clear();
-        v.forEachSegment(ray, start, end, [&](double t0, double t1, double m) {
-            smoke.push_back({t0, t1, m * scale});
+        v.forEachBound(ray, start, end, [&](double t0, double t1, double most, double least) {
+            smoke.push_back({t0, t1, most * scale, least * scale});
             return true;
         });
         addSegments(out, smoke, scratch);

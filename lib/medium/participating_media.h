@@ -29,8 +29,9 @@ public:
 
     // Stretches of [start, end] in order, each with a majorant of the extinction of `h` (if given) plus the smoke:
     // in every band (Band::Largest), or in the band of least positive extinction of each medium
-    // (Band::Smallest, which makes distance sampling reach as far as the clearest band sees). Stretches of
-    // majorant 0 are left out.
+    // (Band::Smallest, which makes distance sampling reach as far as the clearest band sees), with a minorant
+    // in that band (the homogeneous medium's extinction plus the smoke's cells' least). Stretches of majorant 0
+    // are left out.
     enum class Band { Largest, Smallest };
     void majorants(const Ray& ray, double start, double end, const HomogeneousMedium* h,
                    std::vector<MajorantSegment>& out, Band band = Band::Largest) const;

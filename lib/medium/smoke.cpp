@@ -55,6 +55,20 @@ std::shared_ptr<const GridSequence> readFrames(const SceneObject& o, std::span<c
     }
 }
 
+// Raises the residual's majorants for ratio tracking: its estimate's relative variance is e^{∫ r²/σ̄ dt} − 1 for
+// residual r ≤ σ̄, at most e^{D/m} − 1 with the majorants times m, D their optical depth, for m·D tentative
+// collisions on average. m makes D/m at most 0.02 (a standard deviation of 14%) but the collisions at most 32:
+// each costs one density lookup, far less than the shadow rays and samples whose noise it removes
+// (bench/smoke.py: 2.5 to 14 times less time for a given error than m = 1).
+void boostResidual(std::vector<MajorantSegment>& residual) {
+    constexpr double kVariance = 0.02, kCollisions = 32;
+    double depth = 0;
+    for (const MajorantSegment& s : residual) depth += s.majorant * (s.t1 - s.t0);
+    if (!(depth > kVariance)) return;
+    const double m = std::min(depth / kVariance, std::max(1.0, kCollisions / depth));
+    for (MajorantSegment& s : residual) s.majorant *= m;
+}
+
 }  // namespace
 
 SmokeDescription readSmoke(const SceneObject& o) {
@@ -89,11 +103,12 @@ SmokeDescription readSmoke(const SceneObject& o) {
 SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsPerCell)
     : description_(smoke),
       time_(time),
-      majorant_(smoke.frames->boundsAt(time, voxelsPerCell > 0 ? voxelsPerCell : 1 << 24)),
+      majorant_(smoke.frames->boundsAt(time, voxelsPerCell)),
       bounds_(smoke.frames->bounds()),
       // One float ulp above the largest band: extinction() rounds K·ρ to float, which may exceed K·ρ by
       // half an ulp, and the majorant must still bound it.
-      scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)) {
+      scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)),
+      scaleDown_(smoke.extinctionPerDensity.maxValue() * (1 - 0x1p-23)) {
     if (emits())
         for (double kelvin = 0; kelvin <= kHottest; kelvin += kBlackbodyStep) blackbodies_.push_back(blackbody(kelvin));
 }
@@ -121,6 +136,7 @@ Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax, Ra
         }
         return true;
     });
+    boostResidual(residual);
     const Spectrum& k = description_.extinctionPerDensity;
     size_t at = 0;
     Spectrum t = ratioTracking(residual, [&](double s) {

@@ -47,16 +47,20 @@ public:
     const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
     const Spectrum& albedo() const { return description_.albedo; }
     double g() const { return description_.g; }
-    // Calls f(t0, t1, majorant) -> bool for consecutive stretches of [tmin, tmax] along the ray inside the
-    // volume, where majorant ≥ σ_t in every band (0 where there is no smoke); false from f stops the walk.
+    // Calls f(t0, t1, majorant, minorant) -> bool for consecutive stretches of [tmin, tmax] along the ray inside
+    // the volume, where majorant ≥ σ_t in every band (0 where there is no smoke) and minorant ≤ σ_t in the
+    // largest band; false from f stops the walk.
     template <typename F>
-    void forEachSegment(const Ray& ray, double tmin, double tmax, F&& f) const {
-        majorant_.forEachSegment(ray, tmin, tmax, [&](double t0, double t1, double m) { return f(t0, t1, m * scale_); });
+    void forEachBound(const Ray& ray, double tmin, double tmax, F&& f) const {
+        majorant_.forEachBound(ray, tmin, tmax, [&](double t0, double t1, double most, double least) {
+            return f(t0, t1, most * scale_, least * scaleDown_);
+        });
     }
 
     // exp(−∫σ_t) between tmin and tmax, per band, without bias: residual ratio tracking (Novák, Selle and
-    // Jarosz 2014) — the smoke below each cell's minorant in closed form, ratio tracking of the rest — so
-    // that smoke of even density costs no noise.
+    // Jarosz 2014) — the smoke below each cell's minorant in closed form, ratio tracking of the rest, against
+    // majorants raised up to a few dozen tentative collisions per ray so that the product's noise is small —
+    // so that smoke of even density costs no noise, and uneven smoke little.
     Spectrum transmittance(const Ray& ray, double tmin, double tmax, Random& random) const;
 
 private:
@@ -64,7 +68,7 @@ private:
     double time_;
     MajorantGrid majorant_;
     Bounds3 bounds_;
-    double scale_;  // the largest band of extinctionPerDensity
+    double scale_, scaleDown_;  // the largest band of extinctionPerDensity, rounded up and down
     // Black bodies every kBlackbodyStep kelvin from 0 (interpolated between): Planck per sample costs too much.
     static constexpr double kBlackbodyStep = 25, kHottest = 6000;
     std::vector<Spectrum> blackbodies_;

@@ -167,9 +167,9 @@ TEST(Smoke, MajorantsBoundExtinctionAndSegmentsCoverTheChordOfTheBox) {
             const double t0 = (b.lo[a] - org[a]) / ray.dir[a], t1 = (b.hi[a] - org[a]) / ray.dir[a];
             near = std::max(near, std::min(t0, t1)), far = std::min(far, std::max(t0, t1));
         }
-        std::vector<std::array<double, 3>> segments;
-        smoke.forEachSegment(ray, 0, 5, [&](double t0, double t1, double m) {
-            segments.push_back({t0, t1, m});
+        std::vector<std::array<double, 4>> segments;
+        smoke.forEachBound(ray, 0, 5, [&](double t0, double t1, double most, double least) {
+            segments.push_back({t0, t1, most, least});
             return true;
         });
         if (near >= far) {
@@ -184,11 +184,12 @@ TEST(Smoke, MajorantsBoundExtinctionAndSegmentsCoverTheChordOfTheBox) {
         if (near > 0) {  // a point on the ray before it enters the box
             EXPECT_EQ(smoke.density(ray.org + random.uniform() * near * ray.dir), 0.0);
         }
-        for (const auto& [t0, t1, m] : segments)
+        for (const auto& [t0, t1, m, least] : segments)
             for (int k = 0; k < 10; ++k, ++points) {
                 const dvec3 p = ray.org + (t0 + random.uniform() * (t1 - t0)) * ray.dir;
                 const double sigma = smoke.extinction(p).maxValue();
                 ASSERT_GE(m, sigma) << "segment " << t0 << " … " << t1;
+                ASSERT_LE(least, sigma) << "segment " << t0 << " … " << t1;
                 inside += sigma > 0;
             }
     }
@@ -212,8 +213,8 @@ TEST(Smoke, KeyFramesInterpolateLinearlyInTimeAndHoldOutside) {
     // widened by 2⁻²⁰ for the rounding of the weighted sum).
     const auto majorantAt = [&](double time) {
         double m = 0;
-        SmokeVolume(smoke, time).forEachSegment(Ray{dvec3(-5, 4.5, 4.5), dvec3(1, 0, 0)}, 0, 100,
-                                                [&](double, double, double s) { return m = std::max(m, s), true; });
+        SmokeVolume(smoke, time).forEachBound(Ray{dvec3(-5, 4.5, 4.5), dvec3(1, 0, 0)}, 0, 100,
+                                              [&](double, double, double s, double) { return m = std::max(m, s), true; });
         return m;
     };
     EXPECT_NEAR(majorantAt(5), 2.0, 2 * 0x1p-23);  // the scale's one-ulp rounding up
@@ -228,7 +229,7 @@ TEST(Smoke, EmptyGridIsAValidSmokeWithNoMedium) {
     EXPECT_TRUE(empty.bounds().empty());
     EXPECT_EQ(empty.density({0, 0, 0}), 0.0);
     int segments = 0;
-    empty.forEachSegment(Ray{dvec3(-5, 0, 0), dvec3(1, 0, 0)}, 0, 1e9, [&](double, double, double) {
+    empty.forEachBound(Ray{dvec3(-5, 0, 0), dvec3(1, 0, 0)}, 0, 1e9, [&](double, double, double, double) {
         ++segments;
         return true;
     });
@@ -269,7 +270,7 @@ TEST(Smoke, FdsSootFramesAtTheirSimulationTimesGiveTheirExtinction) {
     for (int i = 0; i < 200; ++i) {
         const dvec3 org(10 + 5 * random.uniform(), 5 * random.uniform(), -1);
         const Ray ray{org, glm::normalize(dvec3(random.uniform() - 0.5, random.uniform() - 0.5, 1))};
-        smoke.forEachSegment(ray, 0, 10, [&](double t0, double t1, double m) {
+        smoke.forEachBound(ray, 0, 10, [&](double t0, double t1, double m, double) {
             const dvec3 p = ray.org + (t0 + random.uniform() * (t1 - t0)) * ray.dir;
             const Spectrum sigma = smoke.extinction(p);
             EXPECT_EQ(sigma[0], sigma[2]);
