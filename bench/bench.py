@@ -6,6 +6,7 @@ bench/plot.py in a Python that has matplotlib, or by gnuplot.
 """
 import argparse
 import hashlib
+import json
 import math
 import os
 import random
@@ -323,6 +324,27 @@ def pythons_with(modules):
         if subprocess.run([exe, "-c", "import " + ", ".join(modules)], capture_output=True).returncode == 0:
             found.append(exe)
     return found
+
+
+def matplotlib_plot(script, data, png):
+    """Runs `script` in a Python that has matplotlib, with pyplot as plt, the JSON-able `data` as d and the PNG's
+    path as sys.argv[2]; False if no Python has matplotlib."""
+    for exe in pythons_with(["matplotlib"]):
+        preamble = ("import sys, json\nimport matplotlib\nmatplotlib.use('Agg')\nimport matplotlib.pyplot as plt\n"
+                    "d = json.loads(sys.argv[1])\n")
+        subprocess.run([exe, "-c", preamble + script, json.dumps(data), png], check=True)
+        return True
+    return False
+
+
+def write_result(text, name, plotted, png_name):
+    """Prints `text`, writes it to results/<name>, and says on stderr when the plot could not be drawn."""
+    print(text)
+    os.makedirs(RESULTS, exist_ok=True)
+    with open(os.path.join(RESULTS, name), "w") as f:
+        f.write(text)
+    if not plotted:
+        print(f"no matplotlib: no {png_name}", file=sys.stderr)
 
 
 def plot(tsv, png, ref_noise):

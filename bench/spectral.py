@@ -11,13 +11,12 @@ Writes results/spectral.md and results/spectral_cost.png. Goal (issue 7): 41 ban
 """
 import argparse
 import os
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench import GRID, ROOT, SCENE, Timer, best_of, find_radiance, frozen_octree, git_commit, pythons_with  # noqa: E402
+from bench import GRID, ROOT, SCENE, Timer, best_of, find_radiance, frozen_octree, git_commit, matplotlib_plot, write_result  # noqa: E402
 
 BANDS = [3, 12, 24, 41, 81]
 SEATED = ["-vp", "0.3", "0.3", "1.6", "-vd", "1", "0.8", "-0.3", "-vh", "75", "-vv", "55"]
@@ -73,22 +72,17 @@ def table(times, rad):
 
 
 def plot(times, png):
-    for python in pythons_with(["matplotlib"]):
-        script = (
-            "import sys, json\nimport matplotlib\nmatplotlib.use('Agg')\nimport matplotlib.pyplot as plt\n"
-            "d = json.loads(sys.argv[1]); bands = d['bands']\n"
-            "fig, ax = plt.subplots(figsize=(6, 4))\n"
-            "for name, ratios in d['ratios'].items(): ax.plot(bands, ratios, 'o-', label=name)\n"
-            "ax.axhline(2, color='grey', ls='--', lw=1, label='goal at 41 bands: 2x')\n"
-            "ax.set_xlabel('bands (-cs)'); ax.set_ylabel('CPU time / RGB time'); ax.set_xticks(bands)\n"
-            "ax.set_title('Brume, example office: cost of spectral bands'); ax.legend(); ax.grid(alpha=.3)\n"
-            "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
-        import json
-        data = {"bands": BANDS, "ratios": {name: [times[name, n] / times[name, 3] for n in BANDS]
-                                           for name in WORKLOADS if name != "start"}}
-        subprocess.run([python, "-c", script, json.dumps(data), png], check=True)
-        return True
-    return False
+    script = (
+        "bands = d['bands']\n"
+        "fig, ax = plt.subplots(figsize=(6, 4))\n"
+        "for name, ratios in d['ratios'].items(): ax.plot(bands, ratios, 'o-', label=name)\n"
+        "ax.axhline(2, color='grey', ls='--', lw=1, label='goal at 41 bands: 2x')\n"
+        "ax.set_xlabel('bands (-cs)'); ax.set_ylabel('CPU time / RGB time'); ax.set_xticks(bands)\n"
+        "ax.set_title('Brume, example office: cost of spectral bands'); ax.legend(); ax.grid(alpha=.3)\n"
+        "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
+    data = {"bands": BANDS, "ratios": {name: [times[name, n] / times[name, 3] for n in BANDS]
+                                       for name in WORKLOADS if name != "start"}}
+    return matplotlib_plot(script, data, png)
 
 
 def main():
@@ -102,12 +96,7 @@ def main():
     text = (f"# Spectral rendering: CPU time against bands\n\nBrume {git_commit()}, one thread, fastest of "
             f"{args.repeat} runs (bench/spectral.py; times are CPU seconds, ratios against -cs 3).\n\n"
             + table(times, rad) + "\n")
-    print(text)
-    os.makedirs(RESULTS, exist_ok=True)
-    with open(os.path.join(RESULTS, "spectral.md"), "w") as f:
-        f.write(text)
-    if not plot(times, os.path.join(RESULTS, "spectral_cost.png")):
-        print("spectral: no matplotlib, no plot", file=sys.stderr)
+    write_result(text, "spectral.md", plot(times, os.path.join(RESULTS, "spectral_cost.png")), "spectral_cost.png")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,191 @@
+#!/usr/bin/env python3
+"""Smoke: run time against error, with and without empty-space skipping, and what smoke far away costs.
+
+Scenes (../shared/data):
+  corridor  the corridor of make demo (examples/corridor) in the FDS soot, at t = 60 s (a layer under the
+            ceiling, clear air below) and t = 120 s (the corridor filled); 48 view rays over a 70° x 50° view
+            from its near end, rtrace -ab 0 -ms .05 (attenuation and single scattering of the luminaires' light).
+  plume     OpenVDB's smoke1 plume (sparse: median density 0.018, peak 5.7) in a hall built around it, K .2,
+            albedo .9, g .3, lit by a ceiling panel; 48 view rays from the hall's front wall, -ab 0 -ms 1.
+  Each ray is repeated r = 1, 4, 16, 64 times and its mean compared with a reference of 2000 repeats: the
+  error is the RMS over the rays of (value − reference), over the mean reference luminance (rays meeting an
+  unlit ceiling have a reference near 0, so errors relative to each ray mean nothing there). The majorant
+  grid has cells of 8 voxels (-mc 8, the default) or one cell over the grid's box (-mc 0: no empty-space
+  skipping), and at 64 repeats also of 1, 2, 4 and 16 voxels. One thread, CPU seconds (user + system, loading
+  included).
+  far       the corridor moved 100 m away from the smoke (xform -t -100 0 0): rtrace -I -ab 2 -aa 0 -ad 2048 on
+            20 sensors, with and without the smoke object in the scene, and one sensor (the cost of loading the
+            grids); best of --repeat runs.
+Writes results/smoke.md and results/smoke_time_vs_error.png. Skipped without ../shared/data.
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from bench import RESULTS, ROOT, Timer, best_of, git_commit, matplotlib_plot, write_result  # noqa: E402
+
+CORRIDOR = os.path.join(ROOT, "examples", "corridor")
+VDB = os.path.join(ROOT, "..", "shared", "data", "vdb")
+SOOT = os.path.join(VDB, "fds_room_fire_mesh2_soot")
+LADDER = [1, 4, 16, 64]
+SWEEP = [1, 2, 4, 16]  # further cell sizes, at the ladder's last rung
+SWEEP_COLUMNS = [1, 2, 4, 8, 16, 0]
+REFERENCE_REPEATS = 2000
+
+# The hall around smoke1 (y up; the plume's voxels span x −33.6 … 18.8, y −12.1 … 93.1, z −26 … 26.9).
+HALL = """void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon floor 0 0 12  -40 -15 -35  25 -15 -35  25 -15 35  -40 -15 35
+grey polygon ceiling 0 0 12  -40 100 -35  -40 100 35  25 100 35  25 100 -35
+grey polygon west 0 0 12  -40 -15 -35  -40 -15 35  -40 100 35  -40 100 -35
+grey polygon east 0 0 12  25 -15 -35  25 100 -35  25 100 35  25 -15 35
+grey polygon back 0 0 12  -40 -15 35  25 -15 35  25 100 35  -40 100 35
+grey polygon front 0 0 12  -40 -15 -35  -40 100 -35  25 100 -35  25 -15 -35
+void light panel 0 0 3 50 50 50
+panel polygon lamp 0 0 12  -20 99.9 -15  0 99.9 -15  0 99.9 15  -20 99.9 15
+void smoke plume 1 openvdb_smoke1.vdb 0 7 .2 .2 .2 .9 .9 .9 .3
+"""
+
+
+def view_rays(eye, forward, right, up):
+    """48 directions over a 70° x 50° view."""
+    rays = []
+    for i in range(8):
+        for j in range(6):
+            a, b = (i - 3.5) / 3.5 * 0.7, (j - 2.5) / 2.5 * 0.45
+            rays.append(eye + tuple(f + a * r + b * u for f, r, u in zip(forward, right, up)))
+    return rays
+
+
+def scenes(tmp):
+    """(name, scene files, options, rays, RAYPATH) of each measured case."""
+    hall = os.path.join(tmp, "hall.rad")
+    with open(hall, "w") as f:
+        f.write(HALL)
+    corridor_rays = view_rays((10.3, 3, 1.6), (1, 0, 0), (0, 1, 0), (0, 0, 1))
+    corridor = [os.path.join(CORRIDOR, f) for f in ("corridor.rad", "smoke.rad")]
+    return [(f"corridor, t = {t} s", corridor, ["-ab", "0", "-ms", ".05", "-T", str(t)], corridor_rays,
+             f"{SOOT}:{CORRIDOR}") for t in (60, 120)] + [
+        ("plume", [hall], ["-ab", "0", "-ms", "1"], view_rays((-7, 40, -34), (0, 0, 1), (1, 0, 0), (0, 1, 0)), VDB)]
+
+
+def luminances(text, repeats):
+    """Mean photopic luminance (cd/m²) of each ray's repeats."""
+    values = [179 * (.265 * float(w[0]) + .670 * float(w[1]) + .065 * float(w[2]))
+              for w in (line.split() for line in text.splitlines()) if len(w) >= 3]
+    return [sum(values[k:k + repeats]) / repeats for k in range(0, len(values), repeats)]
+
+
+def run(bin_dir, tmp, case, repeats, cells):
+    _, files, options, rays, raypath = case
+    path = os.path.join(tmp, "rays.txt")
+    with open(path, "w") as f:
+        for r in rays:
+            f.write(("%g %g %g %g %g %g\n" % r) * repeats)
+    cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-n", "1", "-mc", str(cells)] + options + files
+    t = Timer(cmd, path, env=dict(os.environ, RAYPATH=raypath))
+    return luminances(t.out, repeats), t.cpu
+
+
+def normalised_rms(values, reference):
+    mean = sum(reference) / len(reference)
+    return (sum((v - r) ** 2 for v, r in zip(values, reference)) / len(values)) ** 0.5 / mean
+
+
+def far_cost(bin_dir, tmp, repeat):
+    moved = os.path.join(tmp, "far.rad")
+    with open(moved, "w") as f:
+        subprocess.run([os.path.join(bin_dir, "xform"), "-t", "-100", "0", "0", os.path.join(CORRIDOR, "corridor.rad")],
+                       stdout=f, check=True)
+    sensors = os.path.join(tmp, "sensors.txt")
+    with open(sensors, "w") as f:
+        for i in range(10):
+            for y in (2.5, 3.5):
+                f.write(f"{-89.75 + 0.5 * i} {y} 0.8 0 0 1\n")
+    env = dict(os.environ, RAYPATH=f"{SOOT}:{CORRIDOR}")
+    one = os.path.join(tmp, "one.txt")
+    with open(one, "w") as f:
+        f.write("-89.75 2.5 0.8 0 0 1\n")
+    cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-I", "-ab", "2", "-aa", "0", "-ad", "2048", "-u-", "-n", "1",
+           "-T", "120", moved]
+    smoke = [os.path.join(CORRIDOR, "smoke.rad")]
+    # (work without, work with, start without, start with): start = one sensor, mostly loading the scene
+    return (best_of(repeat, cmd, sensors, env)[1], best_of(repeat, cmd + smoke, sensors, env)[1],
+            best_of(repeat, cmd, one, env)[1], best_of(repeat, cmd + smoke, one, env)[1])
+
+
+def plot(series, png):
+    script = (
+        "fig, ax = plt.subplots(figsize=(7, 4.5))\n"
+        "scenes = list(dict.fromkeys(n.rsplit(', -mc', 1)[0] for n in d))\n"
+        "for name, pts in d.items():\n"
+        "    colour = 'C%d' % scenes.index(name.rsplit(', -mc', 1)[0])\n"
+        "    ax.loglog([p[0] for p in pts], [100 * p[1] for p in pts], 'o-' if '-mc 8' in name else 's--',\n"
+        "              color=colour, label=name)\n"
+        "ax.set_xlabel('CPU time (s)'); ax.set_ylabel('normalised RMS error (%)')\n"
+        "ax.set_title('Brume: view rays through smoke, with and without empty-space skipping')\n"
+        "ax.legend(fontsize=7); ax.grid(alpha=.3, which='both')\n"
+        "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
+    return matplotlib_plot(script, series, png)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
+    ap.add_argument("--repeat", type=int, default=3)
+    args = ap.parse_args()
+    if not os.path.isdir(SOOT):
+        print(f"smoke: no {SOOT}: skipped", file=sys.stderr)
+        return
+    rows, series, notes, sweep = [], {}, [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        for case in scenes(tmp):
+            reference, ref_cpu = run(args.bin, tmp, case, REFERENCE_REPEATS, 8)
+            curves = {}
+            for cells in (8, 0):
+                name = f"{case[0]}, -mc {cells}"
+                curves[cells] = series[name] = []
+                for r in LADDER:
+                    values, cpu = run(args.bin, tmp, case, r, cells)
+                    err = normalised_rms(values, reference)
+                    curves[cells].append((cpu, err))
+                    rows.append(f"| {case[0]} | -mc {cells} | {r} | {cpu:.2f} s | {100 * err:.2f} % |")
+                    print(f"  {name} x{r}: {cpu:.2f} s, {100 * err:.2f} %", file=sys.stderr)
+            # Cell size at the last rung: time × error² (∝ the time to a given error, variance ∝ 1/time).
+            efficiency = {cells: curves[cells][-1] for cells in (8, 0)}
+            for cells in SWEEP:
+                values, cpu = run(args.bin, tmp, case, LADDER[-1], cells)
+                efficiency[cells] = (cpu, normalised_rms(values, reference))
+            base = efficiency[8][0] * efficiency[8][1] ** 2
+            sweep.append(f"| {case[0]} | " + " | ".join(
+                f"{efficiency[c][0]:.2f} s, {100 * efficiency[c][1]:.1f} %: {efficiency[c][0] * efficiency[c][1] ** 2 / base:.2f}"
+                for c in SWEEP_COLUMNS) + " |")
+            skip, full = curves[8][-1], curves[0][-1]
+            own = skip[1] * (LADDER[-1] / REFERENCE_REPEATS) ** .5
+            # Time at equal error: variance ∝ 1/time, so time × error² compares the two at any error.
+            notes.append(f"- {case[0]} (rtrace {' '.join(case[2])}): reference {ref_cpu:.0f} CPU s, its own error "
+                         f"about {100 * own:.2f} %; at {LADDER[-1]} repeats -mc 0 takes {full[0] / skip[0]:.2f}x the "
+                         f"time of -mc 8, and {full[0] * full[1] ** 2 / (skip[0] * skip[1] ** 2):.2f}x its time at "
+                         "equal error (time × error²).")
+        without, with_smoke, start, start_smoke = far_cost(args.bin, tmp, args.repeat)
+    text = (f"# Smoke: time against error\n\nBrume {git_commit()}, one thread (bench/smoke.py; its docstring says what "
+            f"is measured). Each ray's mean of r repeats against a reference of {REFERENCE_REPEATS} repeats; error: "
+            "RMS over the 48 rays over the mean reference luminance.\n\n"
+            "| scene | majorant cells | repeats | CPU | error |\n|---|---|---|---|---|\n" + "\n".join(rows) +
+            "\n\n" + "\n".join(notes) +
+            f"\n\nCell size (-mc, voxels) at {LADDER[-1]} repeats: CPU, error, and time × error² relative to -mc 8 (below "
+            "1: a given error sooner):\n\n| scene | " + " | ".join(f"-mc {c}" for c in SWEEP_COLUMNS) + " |\n|---" +
+            "|---" * len(SWEEP_COLUMNS) + "|\n" + "\n".join(sweep) +
+            "\n\nSmoke far from every ray (the corridor 100 m away; rtrace -I -ab 2 -aa 0 -ad 2048, "
+            f"20 sensors, best of {args.repeat}): {without:.2f} s without the smoke object, {with_smoke:.2f} s with it "
+            f"({with_smoke / without:.2f}x); of which loading (one sensor): {start:.2f} s and {start_smoke:.2f} s; "
+            f"the rays alone: {(with_smoke - start_smoke) / max(without - start, 1e-9):.2f}x.\n")
+    write_result(text, "smoke.md", plot(series, os.path.join(RESULTS, "smoke_time_vs_error.png")),
+                 "smoke_time_vs_error.png")
+
+
+if __name__ == "__main__":
+    main()
