@@ -131,7 +131,7 @@ Spectrum Integrator::directFrom(const Light& light, double closedForm, double sh
         Ray shadow{sh.point, s->dir, std::numeric_limits<double>::infinity(), surface};
         float weight = float(1 / (s->pdf * count));
         Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), s->distance, scene_);
-        if (seen == Occlusion::Unsure || (seen == Occlusion::Clear && hasMedia_)) {
+        if (seen == Occlusion::Unsure || (seen == Occlusion::Clear && attenuates(shadow, s->distance, state))) {
             const Spectrum& le = sourceRadiance(light, *s, sh.point, scratch);
             Spectrum t = seen == Occlusion::Unsure ? shadowTransmittance(shadow, light, state, ctx)
                                                    : clearTransmittance(shadow, s->distance, state, ctx);

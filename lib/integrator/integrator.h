@@ -106,6 +106,7 @@ private:
                           const PathState& state, Context& ctx, RayRecord* record, Spectrum* misEmission) const;
     Spectrum mediaTransmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                 Context& ctx) const;
+    bool attenuates(const Ray& ray, double distance, const PathState& state) const;
     Spectrum clearTransmittance(const Ray& ray, double distance, const PathState& state, Context& ctx) const;
     Spectrum inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                          const PathState& state, Context& ctx) const;

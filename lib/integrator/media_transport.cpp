@@ -68,6 +68,11 @@ Spectrum Integrator::mediaTransmittance(const Ray& ray, double start, double end
     return t.isBlack() || !media_.hasSmoke() ? t : t * media_.smokeTransmittance(ray, start, end, ctx.rng);
 }
 
+// Whether some medium lies on a shadow ray's way to `distance` (smoke far from it costs a box test).
+bool Integrator::attenuates(const Ray& ray, double distance, const PathState& state) const {
+    return hasMedia_ && (!homogeneousAlong(ray, nullptr, state).clear() || media_.smokeAlong(ray, 0, distance));
+}
+
 // Along a shadow ray that meets no surface before `distance`.
 Spectrum Integrator::clearTransmittance(const Ray& ray, double distance, const PathState& state, Context& ctx) const {
     return mediaTransmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state), ctx);
