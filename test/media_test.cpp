@@ -262,6 +262,37 @@ TEST(Smoke, AlbedoOneSmokeInAFurnaceChangesNothing) {
     }
 }
 
+// An integrating sphere (R 1, walls ρ .5, a small central lamp of flux Φ) filled with albedo-1 smoke of optical
+// radius 1, isotropic and forward-scattering (g .5): the smoke absorbs nothing and, by symmetry, leaves the walls'
+// irradiance uniform, so it stays Φ/(4πR²(1 − ρ)) with every order of surface and volume scattering counted
+// (-ab 100 -aa 0: path tracing ended by Russian roulette): light reaching the walls through smoke, smoke lit by
+// the walls, walks of many scatterings. Less what the lamp (a black body to light) absorbs of its own light
+// scattered back by the smoke around it: σ r / 4 = 0.5% at first scattering, more with later ones (measured
+// 0.2–1.8% below over four seeds; −0.9% with a homogeneous medium, 3000 sensors × 512 paths). 2.5% (noise 0.5%).
+TEST(Smoke, IntegratingSphereFilledWithWhiteSmokeKeepsItsIrradiance) {
+    RayPathDir dir;
+    writeGrid(dir.path() / "fill.vdb", boxGrid({-15, -15, -15}, {15, 15, 15}, 1.0f, 0.1));
+    const double lampRadius = 0.02, lampRadiance = 1000;
+    const double expected = 4 * M_PI * lampRadius * lampRadius * M_PI * lampRadiance / (4 * M_PI) / (1 - 0.5);
+    for (const char* g : {"0", ".5"}) {
+        TestScene t(std::string("void plastic wall 0 0 5 .5 .5 .5 0 0\nwall bubble inside 0 0 4 0 0 0 1\n") +
+                    "void light lamp 0 0 3 1000 1000 1000\nlamp sphere bulb 0 0 4 0 0 0 .02\n"
+                    "void smoke s 1 fill.vdb 0 7 1 1 1 1 1 1 " + g + "\n");
+        RenderSettings s = settings("-ab 100");
+        s.ambientAccuracy = 0;
+        s.ambientDivisions = 4096;
+        Integrator integrator(t.render, s);
+        double sum = 0;
+        Random random(5);
+        for (int i = 0; i < 24; ++i) {
+            const double z = 2 * random.uniform() - 1, phi = 2 * M_PI * random.uniform(), r = std::sqrt(1 - z * z);
+            const dvec3 wall(r * std::cos(phi), r * std::sin(phi), z);
+            sum += integrator.irradiance(wall * (1 - 1e-4), -wall, uint64_t(i)).value[0];
+        }
+        EXPECT_NEAR(sum / 24, expected, 0.025 * expected) << "g " << g;
+    }
+}
+
 // A spectrum modifying a smoke makes its extinction spectral: K(λ) = K·s(λ). In 6 bands of 50 nm over 400–700 nm,
 // s = 2 below 550 nm and 1 above: each band's transmittance is e^{−7·.1·s}, exactly (even smoke; bands of equal
 // width, longest first).
