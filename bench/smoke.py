@@ -14,7 +14,7 @@ Scenes (../shared/data):
   skipping), and at 64 repeats also of 1, 2, 4 and 16 voxels. One thread, CPU seconds (user + system, loading
   included).
   far       the corridor moved 100 m away from the smoke (xform -t -100 0 0): rtrace -I -ab 2 -aa 0 -ad 2048 on
-            20 sensors, with and without the smoke object in the scene, and one sensor (the cost of loading the
+            200 sensors, with and without the smoke object in the scene, and one sensor (the cost of loading the
             grids); best of --repeat runs.
 Writes results/smoke.md and results/smoke_time_vs_error.png. Skipped without ../shared/data.
 """
@@ -102,9 +102,9 @@ def far_cost(bin_dir, tmp, repeat):
                        stdout=f, check=True)
     sensors = os.path.join(tmp, "sensors.txt")
     with open(sensors, "w") as f:
-        for i in range(10):
-            for y in (2.5, 3.5):
-                f.write(f"{-89.75 + 0.5 * i} {y} 0.8 0 0 1\n")
+        for i in range(50):
+            for y in (2.3, 2.8, 3.2, 3.7):
+                f.write(f"{-89.9 + 0.1 * i} {y} 0.8 0 0 1\n")
     env = dict(os.environ, RAYPATH=f"{SOOT}:{CORRIDOR}")
     one = os.path.join(tmp, "one.txt")
     with open(one, "w") as f:
@@ -180,7 +180,7 @@ def main():
             "1: a given error sooner):\n\n| scene | " + " | ".join(f"-mc {c}" for c in SWEEP_COLUMNS) + " |\n|---" +
             "|---" * len(SWEEP_COLUMNS) + "|\n" + "\n".join(sweep) +
             "\n\nSmoke far from every ray (the corridor 100 m away; rtrace -I -ab 2 -aa 0 -ad 2048, "
-            f"20 sensors, best of {args.repeat}): {without:.2f} s without the smoke object, {with_smoke:.2f} s with it "
+            f"200 sensors, best of {args.repeat}): {without:.2f} s without the smoke object, {with_smoke:.2f} s with it "
             f"({with_smoke / without:.2f}x); of which loading (one sensor): {start:.2f} s and {start_smoke:.2f} s; "
             f"the rays alone: {(with_smoke - start_smoke) / max(without - start, 1e-9):.2f}x.\n")
     write_result(text, "smoke.md", plot(series, os.path.join(RESULTS, "smoke_time_vs_error.png")),
