@@ -1,6 +1,7 @@
 // Distances along a ray drawn where a piecewise-constant majorant σ̄ puts the first tentative collision,
 // conditioned to fall before the ray's end: density σ̄(t) e^{−τ̄(t)} / (1 − e^{−τ̄(end)}), τ̄ the majorant's
 // optical depth from the start. Every draw lands in the medium, so thin media are sampled as well as thick.
+// And distances drawn uniformly over the same stretches, its guard where the majorant is loose.
 #pragma once
 #include <cmath>
 #include <span>
@@ -45,10 +46,6 @@ private:
     std::span<const MajorantSegment> segments_;
     double reach_;
 };
-
-}  // namespace brume
-
-namespace brume {
 
 // Distances drawn uniformly over the length `segments` cover (their majorants ignored): a density that
 // never falls below 1/length, mixed with ForcedCollision where a majorant may exceed the extinction by far

@@ -19,9 +19,10 @@ namespace brume {
 
 // Cells are boxes of voxelsPerCell³ voxels of the first grid, aligned with its voxels (so in its index space,
 // rotated with it), over the union of the grids' bounds; the cell size grows when needed to keep at most
-// kMaxCells cells; voxelsPerCell 0 makes one cell of that union (no empty space skipped inside it). Each cell holds the largest density that trilinear interpolation of any of the grids
-// reaches in it — the largest voxel whose interpolation support (one voxel each side of its centre) meets the
-// cell — which also bounds any convex combination of the grids, such as linear interpolation in time.
+// kMaxCells cells; voxelsPerCell 0 makes one cell of that union (no empty space skipped inside it). Each cell
+// holds the largest density that trilinear interpolation of any of the grids reaches in it — the largest voxel
+// whose interpolation support (one voxel each side of its centre) meets the cell — which also bounds any convex
+// combination of the grids, such as linear interpolation in time.
 // Each cell also holds a lower bound (minorant): the smallest voxel whose support meets the cell, 0 where an
 // inactive voxel does, over all the grids (0 unless they share the first grid's transform). Residual ratio
 // tracking takes the smoke below it in closed form and tracks only the rest.
@@ -42,13 +43,10 @@ public:
     double minorant(const dvec3& p) const;
 
     // Walks ray.at(t) for t in [tmin, tmax] (ray.tmin and ray.tmax are not used) and calls
-    // callback(t0, t1, majorant) -> bool (false stops the walk) for consecutive segments, in order, that
-    // cover the part of [tmin, tmax] inside the grid exactly once (each t0 is the previous t1). Consecutive
-    // cells of equal majorant make one segment; segments of majorant 0 are reported too. A ray missing
-    // the grid gives no segment; outside the grid the density is 0.
-    template <typename Callback>
-    void forEachSegment(const Ray& ray, double tmin, double tmax, Callback&& callback) const;
-    // The same walk with callback(t0, t1, majorant, minorant): consecutive cells merge when both are equal.
+    // callback(t0, t1, majorant, minorant) -> bool (false stops the walk) for consecutive segments, in order,
+    // that cover the part of [tmin, tmax] inside the grid exactly once (each t0 is the previous t1).
+    // Consecutive cells of equal bounds make one segment; segments of majorant 0 are reported too. A ray
+    // missing the grid gives no segment; outside the grid the density is 0.
     template <typename Callback>
     void forEachBound(const Ray& ray, double tmin, double tmax, Callback&& callback) const;
 
@@ -119,23 +117,6 @@ void MajorantGrid::forEachBound(const Ray& ray, double tmin, double tmax, Callba
         majorant = majorants_[at], minorant = minorants_[at];
     }
     callback(t0, tmax, double(majorant), double(minorant));
-}
-
-template <typename Callback>
-void MajorantGrid::forEachSegment(const Ray& ray, double tmin, double tmax, Callback&& callback) const {
-    // Stretches of equal majorant but different minorants are one segment here.
-    double t0 = 0, t1 = 0, majorant = -1;
-    bool going = true;
-    forEachBound(ray, tmin, tmax, [&](double a, double b, double m, double) {
-        if (m == majorant) {
-            t1 = b;
-            return true;
-        }
-        if (majorant >= 0 && !(going = callback(t0, t1, majorant))) return false;
-        t0 = a, t1 = b, majorant = m;
-        return true;
-    });
-    if (going && majorant >= 0) callback(t0, t1, majorant);
 }
 
 }  // namespace brume
