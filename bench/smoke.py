@@ -26,7 +26,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench import RESULTS, ROOT, Timer, best_of, git_commit, matplotlib_plot, write_result  # noqa: E402
+from bench import RESULTS, ROOT, Timer, best_of, git_commit, lux, matplotlib_plot, read_rgb, write_result  # noqa: E402
 
 CORRIDOR = os.path.join(ROOT, "examples", "corridor")
 VDB = os.path.join(ROOT, "..", "shared", "data", "vdb")
@@ -74,8 +74,7 @@ def scenes(tmp):
 
 def luminances(text, repeats):
     """Mean photopic luminance (cd/m²) of each ray's repeats."""
-    values = [179 * (.265 * float(w[0]) + .670 * float(w[1]) + .065 * float(w[2]))
-              for w in (line.split() for line in text.splitlines()) if len(w) >= 3]
+    values = [lux(rgb) for rgb in read_rgb(text)]  # lux's factors are luminance's too
     return [sum(values[k:k + repeats]) / repeats for k in range(0, len(values), repeats)]
 
 
