@@ -1,6 +1,7 @@
 #include "material/bsdf_xml.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -32,7 +33,11 @@ TEST(BsdfXml, ReadsTheFourKlemsMatricesInRadiancesOrientation) {
 
 class BsdfXmlText : public ::testing::Test {
 protected:
-    std::string path = (std::filesystem::temp_directory_path() / "brume_bsdf_xml_test.xml").string();
+    // One file per test and process: ctest runs this fixture's tests at once.
+    std::string path = (std::filesystem::temp_directory_path() /
+                        ("brume_bsdf_xml_" + std::to_string(::getpid()) + "_" +
+                         ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".xml"))
+                           .string();
     void TearDown() override { std::filesystem::remove(path); }
 
     // A file with one distribution on a basis of 3 patches (a polar cap, two below it); `blocks` go first.
