@@ -7,11 +7,15 @@ Scenes (../shared/data):
             from its near end, rtrace -ab 0 -ms .05 (attenuation and single scattering of the luminaires' light).
   plume     OpenVDB's smoke1 plume (sparse: median density 0.018, peak 5.7) in a hall built around it, K .2,
             albedo .9, g .3, lit by a ceiling panel; 48 view rays from the hall's front wall, -ab 0 -ms 1.
+  halo      a small sphere lamp (R 5 cm) in a room filled with fog (-me .3, albedo .9, g .6: Radiance's
+            global medium), 48 view rays past it, -ab 0 -ms .5: the halo, where in-scattering samples drawn
+            toward the lamp (equiangular, shaped by the phase) matter most.
+  bulb      the plume's hall lit by a sphere bulb (R 0.5) inside the plume instead of the ceiling panel.
   Each ray is repeated r = 1, 4, 16, 64 times and its mean compared with a reference of 2000 repeats: the
   error is the RMS over the rays of (value − reference), over the mean reference luminance (rays meeting an
   unlit ceiling have a reference near 0, so errors relative to each ray mean nothing there). The majorant
   grid has cells of 8 voxels (-mc 8, the default) or one cell over the grid's box (-mc 0: no empty-space
-  skipping), and at 64 repeats also of 1, 2, 4 and 16 voxels. One thread, CPU seconds (user + system, loading
+  skipping), and at 64 repeats also of 1, 2, 4 and 16 voxels (corridor and plume; halo and bulb: -mc 8 only). One thread, CPU seconds (user + system, loading
   included).
   far       the corridor moved 100 m away from the smoke (xform -t -100 0 0): rtrace -I -ab 2 -aa 0 -ad 2048 on
             200 sensors, with and without the smoke object in the scene, and one sensor (the cost of loading the
@@ -37,6 +41,22 @@ SWEEP_COLUMNS = [1, 2, 4, 8, 16, 0]
 REFERENCE_REPEATS = 2000
 
 # The hall around smoke1 (y up; the plume's voxels span x −33.6 … 18.8, y −12.1 … 93.1, z −26 … 26.9).
+PANEL = """void light panel 0 0 3 50 50 50
+panel polygon lamp 0 0 12  -20 99.9 -15  0 99.9 -15  0 99.9 15  -20 99.9 15
+"""
+BULB = """void light bulb 0 0 3 20000 20000 20000
+bulb sphere lamp 0 0 4  -3 45 5  0.5
+"""
+FOG_ROOM = """void light bulb 0 0 3 2000 2000 2000
+bulb sphere b 0 0 4  0 0 2.5  0.05
+void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon floor 0 0 12  -5 -5 0  5 -5 0  5 5 0  -5 5 0
+grey polygon ceiling 0 0 12  -5 -5 4  -5 5 4  5 5 4  5 -5 4
+grey polygon west 0 0 12  -5 -5 0  -5 5 0  -5 5 4  -5 -5 4
+grey polygon east 0 0 12  5 -5 0  5 -5 4  5 5 4  5 5 0
+grey polygon north 0 0 12  -5 5 0  -5 5 4  5 5 4  5 5 0
+grey polygon south 0 0 12  -5 -5 0  5 -5 0  5 -5 4  -5 -5 4
+"""
 HALL = """void plastic grey 0 0 5 .5 .5 .5 0 0
 grey polygon floor 0 0 12  -40 -15 -35  25 -15 -35  25 -15 35  -40 -15 35
 grey polygon ceiling 0 0 12  -40 100 -35  -40 100 35  25 100 35  25 100 -35
@@ -44,8 +64,6 @@ grey polygon west 0 0 12  -40 -15 -35  -40 -15 35  -40 100 35  -40 100 -35
 grey polygon east 0 0 12  25 -15 -35  25 100 -35  25 100 35  25 -15 35
 grey polygon back 0 0 12  -40 -15 35  25 -15 35  25 100 35  -40 100 35
 grey polygon front 0 0 12  -40 -15 -35  -40 100 -35  25 100 -35  25 -15 -35
-void light panel 0 0 3 50 50 50
-panel polygon lamp 0 0 12  -20 99.9 -15  0 99.9 -15  0 99.9 15  -20 99.9 15
 void smoke plume 1 openvdb_smoke1.vdb 0 7 .2 .2 .2 .9 .9 .9 .3
 """
 
@@ -61,15 +79,22 @@ def view_rays(eye, forward, right, up):
 
 
 def scenes(tmp):
-    """(name, scene files, options, rays, RAYPATH) of each measured case."""
-    hall = os.path.join(tmp, "hall.rad")
-    with open(hall, "w") as f:
-        f.write(HALL)
+    """(name, scene files, options, rays, RAYPATH, whether to compare cell sizes) of each measured case."""
+    def scene(name, text):
+        path = os.path.join(tmp, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
     corridor_rays = view_rays((10.3, 3, 1.6), (1, 0, 0), (0, 1, 0), (0, 0, 1))
     corridor = [os.path.join(CORRIDOR, f) for f in ("corridor.rad", "smoke.rad")]
+    hall_rays = view_rays((-7, 40, -34), (0, 0, 1), (1, 0, 0), (0, 1, 0))
     return [(f"corridor, t = {t} s", corridor, ["-ab", "0", "-ms", ".05", "-T", str(t)], corridor_rays,
-             f"{SOOT}:{CORRIDOR}") for t in (60, 120)] + [
-        ("plume", [hall], ["-ab", "0", "-ms", "1"], view_rays((-7, 40, -34), (0, 0, 1), (1, 0, 0), (0, 1, 0)), VDB)]
+             f"{SOOT}:{CORRIDOR}", True) for t in (60, 120)] + [
+        ("plume", [scene("hall.rad", PANEL + HALL)], ["-ab", "0", "-ms", "1"], hall_rays, VDB, True),
+        ("halo", [scene("fog.rad", FOG_ROOM)], ["-ab", "0", "-ms", ".5", "-me", ".3", ".3", ".3", "-ma", ".9", ".9",
+                                                ".9", "-mg", ".6"],
+         view_rays((-4, -4, 1.5), (0.707, 0.707, 0), (0.707, -0.707, 0), (0, 0, 1)), VDB, False),
+        ("bulb in the plume", [scene("bulb.rad", BULB + HALL)], ["-ab", "0", "-ms", "1"], hall_rays, VDB, False)]
 
 
 def luminances(text, repeats):
@@ -79,7 +104,7 @@ def luminances(text, repeats):
 
 
 def run(bin_dir, tmp, case, repeats, cells):
-    _, files, options, rays, raypath = case
+    _, files, options, rays, raypath, _ = case
     path = os.path.join(tmp, "rays.txt")
     with open(path, "w") as f:
         for r in rays:
@@ -144,7 +169,8 @@ def main():
         for case in scenes(tmp):
             reference, ref_cpu = run(args.bin, tmp, case, REFERENCE_REPEATS, 8)
             curves = {}
-            for cells in (8, 0):
+            compared = (8, 0) if case[5] else (8,)
+            for cells in compared:
                 name = f"{case[0]}, -mc {cells}"
                 curves[cells] = series[name] = []
                 for r in LADDER:
@@ -153,8 +179,14 @@ def main():
                     curves[cells].append((cpu, err))
                     rows.append(f"| {case[0]} | -mc {cells} | {r} | {cpu:.2f} s | {100 * err:.2f} % |")
                     print(f"  {name} x{r}: {cpu:.2f} s, {100 * err:.2f} %", file=sys.stderr)
+            skip = curves[8][-1]
+            own = skip[1] * (LADDER[-1] / REFERENCE_REPEATS) ** .5
+            note = f"- {case[0]} (rtrace {' '.join(case[2])}): reference {ref_cpu:.0f} CPU s, its own error about {100 * own:.2f} %"
+            if not case[5]:
+                notes.append(note + ".")
+                continue
             # Cell size at the last rung: time × error² (∝ the time to a given error, variance ∝ 1/time).
-            efficiency = {cells: curves[cells][-1] for cells in (8, 0)}
+            efficiency = {cells: curves[cells][-1] for cells in compared}
             for cells in SWEEP:
                 values, cpu = run(args.bin, tmp, case, LADDER[-1], cells)
                 efficiency[cells] = (cpu, normalised_rms(values, reference))
@@ -162,13 +194,10 @@ def main():
             sweep.append(f"| {case[0]} | " + " | ".join(
                 f"{efficiency[c][0]:.2f} s, {100 * efficiency[c][1]:.1f} %: {efficiency[c][0] * efficiency[c][1] ** 2 / base:.2f}"
                 for c in SWEEP_COLUMNS) + " |")
-            skip, full = curves[8][-1], curves[0][-1]
-            own = skip[1] * (LADDER[-1] / REFERENCE_REPEATS) ** .5
+            full = curves[0][-1]
             # Time at equal error: variance ∝ 1/time, so time × error² compares the two at any error.
-            notes.append(f"- {case[0]} (rtrace {' '.join(case[2])}): reference {ref_cpu:.0f} CPU s, its own error "
-                         f"about {100 * own:.2f} %; at {LADDER[-1]} repeats -mc 0 takes {full[0] / skip[0]:.2f}x the "
-                         f"time of -mc 8, and {full[0] * full[1] ** 2 / (skip[0] * skip[1] ** 2):.2f}x its time at "
-                         "equal error (time × error²).")
+            notes.append(note + f"; at {LADDER[-1]} repeats -mc 0 takes {full[0] / skip[0]:.2f}x the time of -mc 8, and "
+                         f"{full[0] * full[1] ** 2 / (skip[0] * skip[1] ** 2):.2f}x its time at equal error (time × error²).")
         without, with_smoke, start, start_smoke = far_cost(args.bin, tmp, args.repeat)
     text = (f"# Smoke: time against error\n\nBrume {git_commit()}, one thread (bench/smoke.py; its docstring says what "
             f"is measured). Each ray's mean of r repeats against a reference of {REFERENCE_REPEATS} repeats; error: "

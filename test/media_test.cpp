@@ -103,8 +103,9 @@ TEST(Media, AmbientValueScatteredAlongRaysMatchesRadiance) {
 
 // Single scattering of a sphere lamp (R .05, L 1000) in a global medium σ .01, albedo 1: rays passing it at
 // .5, 1, 2 and one oblique; isotropic and g = .6. References: check.py's numerical integrals with full
-// extinction. 1%: Brume samples the sphere's true solid angle (check.py takes πR²/d², 0.25% larger at .5)
-// and 2000 traces leave a standard error of 0.3% at most (measured within 0.4% of every reference).
+// extinction. 0.6%: Brume samples the sphere's true solid angle (check.py takes πR²/d², 0.25% larger at .5)
+// and 2000 traces leave a standard error of 0.1% at most, the points drawn toward the lamp by the phase
+// function (0.3% before they were; measured within 0.4% of the reference at .5, 0.2% elsewhere).
 TEST(Media, SingleScatteringOfASphereLamp) {
     TestScene t(slurp(kDir + "expanded/b_sphere.rad"));
     const std::vector<std::pair<std::string, std::vector<double>>> cases{
@@ -114,7 +115,7 @@ TEST(Media, SingleScatteringOfASphereLamp) {
         Integrator integrator(t.render, settings("-ab 0 -ds 0 -ms .01 -me .01 .01 .01 -ma 1 1 1 " + g));
         std::vector<TestRay> rays = raysOf("b_rays.txt");
         for (size_t i = 0; i < rays.size(); ++i)
-            EXPECT_NEAR(meanRadiance(integrator, rays[i], 2000)[0], reference[i], 0.01 * reference[i]) << g << " ray " << i;
+            EXPECT_NEAR(meanRadiance(integrator, rays[i], 2000)[0], reference[i], 0.006 * reference[i]) << g << " ray " << i;
     }
 }
 

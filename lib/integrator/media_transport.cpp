@@ -15,6 +15,64 @@ namespace brume {
 
 using namespace integrator_detail;
 
+namespace {
+
+// A source to draw distances toward, and its share of those draws.
+struct SourceDistance {
+    EquiangularCollision distance;
+    double share;
+};
+
+// The sources to draw distances toward, at most kMaxSourceDistances, with shares in proportion to a rough
+// guess of their single scattering along the ray: intensity (radiance × size²) times ∫ σ̄ p dt/r² over the
+// stretches (EquiangularCollision::phaseAngle over the source's distance from the ray). Among many sources,
+// the candidates are those of the largest intensity × ∫ dt/r² over the whole span, a guess that costs two
+// arc tangents a source.
+std::vector<SourceDistance> sourceDistances(const std::vector<Light>& lights, const Ray& ray,
+                                            std::span<const MajorantSegment> segments, const HenyeyGreenstein& phase) {
+    constexpr size_t kMaxSourceDistances = 8;
+    thread_local std::vector<std::pair<double, const Light*>> candidates;
+    candidates.clear();
+    const double a = segments.front().t0, b = segments.back().t1;
+    auto intensityOf = [](const Light& l) { return brightness(l.emitter().radiance) * l.size() * l.size(); };
+    for (const Light& light : lights) {
+        if (light.isDistant() || !light.emitter().isDirectSource()) continue;
+        double intensity = intensityOf(light);
+        double foot = glm::dot(light.center() - ray.org, ray.dir);
+        double h = std::max(glm::length(light.center() - ray.at(foot)), 0.5 * light.size());
+        double angle = (std::isfinite(b) ? std::atan((b - foot) / h) : kPi / 2) - std::atan((a - foot) / h);
+        double guess = intensity * angle / h;
+        if (guess > 0 && std::isfinite(guess)) candidates.push_back({guess, &light});
+    }
+    if (candidates.size() > kMaxSourceDistances) {
+        std::nth_element(candidates.begin(), candidates.begin() + kMaxSourceDistances, candidates.end(),
+                         [](const auto& x, const auto& y) { return x.first > y.first; });
+        candidates.resize(kMaxSourceDistances);
+    }
+    std::vector<SourceDistance> out;
+    double total = 0;
+    for (const auto& [_, light] : candidates) {
+        EquiangularCollision distance(segments, ray, light->center(), 0.5 * light->size(), phase);
+        double share = intensityOf(*light) * distance.phaseAngle() / distance.distanceFromRay();
+        if (!(share > 0) || !std::isfinite(share)) continue;
+        out.push_back({std::move(distance), share});
+        total += share;
+    }
+    for (SourceDistance& s : out) s.share /= total;
+    return out;
+}
+
+// A distance drawn toward the source whose share holds u (in [0, 1)), by what is left of u within that share.
+double drawToward(const std::vector<SourceDistance>& sources, double u) {
+    for (const SourceDistance& s : sources) {
+        if (u < s.share || &s == &sources.back()) return s.distance.sample(std::min(u / s.share, 1.0));
+        u -= s.share;
+    }
+    return 0;
+}
+
+}  // namespace
+
 // The global medium and the mists the ray is in. A ray leaving a mist it was not known to be in started inside
 // it (the eye or sensor in the mist): the mist fills the ray's way to that boundary, as Radiance rules for
 // mists with a source list.
@@ -88,10 +146,11 @@ int Integrator::inScatteringSamples(double length) const {
 // ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), stratified,
 // at points drawn by a mixture of strategies, weighed by the mixture's density (one-sample MIS): forced into
 // the medium (ForcedCollision) by the majorant of the largest band, and of the clearest one (clear bands see
-// far, dense ones near, and T_λ σ_s / density stays bounded in every band), and uniform in length with half
-// the share of the ray where the majorant exceeds the extinction (smoke's cells): drawn by such a majorant
-// alone, light deep in thin smoke would come from rare draws of huge weight. Where the majorant is the
-// extinction (a homogeneous medium, even smoke), T σ_s / density is a constant: only L_s is sampled.
+// far, dense ones near, and T_λ σ_s / density stays bounded in every band); uniform in length with half the
+// share of the ray where the majorant exceeds the extinction (smoke's cells): drawn by such a majorant alone,
+// light deep in thin smoke would come from rare draws of huge weight; and, with half of all draws, toward the
+// sources (EquiangularCollision), each by its rough share of the single scattering: L_s of a lamp's light
+// falls as 1/r² from it, which the others do not see, and which makes most of the noise of a ray passing a lamp.
 Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                  const PathState& state, Context& ctx) const {
     std::vector<MajorantSegment> dense, clear;
@@ -107,16 +166,25 @@ Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const
     double loose = 0;
     for (const MajorantSegment& s : dense)  // (the bounds' own rounding is not looseness)
         if (s.minorant < s.majorant * (1 - 1e-5)) loose += s.t1 - s.t0;
-    double uniform = std::isfinite(even.length()) ? 0.5 * loose / even.length() : 0;  // none out to infinity
+    std::vector<SourceDistance> sources;
+    if (media_.scatters(h))
+        sources = sourceDistances(scene_.lights(), ray, dense, HenyeyGreenstein(media_.asymmetry(ray, start, end, h)));
+    double toward = sources.empty() ? 0 : 0.5;
+    double uniform = std::isfinite(even.length()) ? (1 - toward) * 0.5 * loose / even.length() : 0;  // none out to infinity
+    double forced = 1 - toward - uniform;
     int n = inScatteringSamples(even.length());
     Spectrum sum(0.f);
     for (int k = 0; k < n; ++k) {
-        double u = (k + ctx.rng.uniform()) / n;
-        double pick = uniform > 0 || mixed ? ctx.rng.uniform() : 1;
-        double t = pick < uniform ? even.sample(u) : mixed && pick < uniform + 0.5 * (1 - uniform) ? far.sample(u)
-                                                                                                  : near.sample(u);
+        // One stratified number picks the strategy, by the shares in turn, and what is left of it the point
+        // that strategy draws: each strategy's draws stay stratified among themselves.
+        double u = (k + ctx.rng.uniform()) / n, t;
+        if (u < toward) t = drawToward(sources, u / toward);
+        else if ((u -= toward) < uniform) t = even.sample(u / uniform);
+        else if (u = (u - uniform) / forced; mixed) t = u < 0.5 ? far.sample(2 * u) : near.sample(2 * u - 1);
+        else t = near.sample(u);
         double density = uniform * even.density(t) +
-                         (1 - uniform) * (mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t));
+                         forced * (mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t));
+        for (const SourceDistance& s : sources) density += toward * s.share * s.distance.density(t);
         if (!(density > 0)) continue;
         Spectrum tr = mediaTransmittance(ray, start, t, h, ctx);
         if (tr.isBlack()) continue;

@@ -60,6 +60,9 @@ public:
     bool patterned() const { return patterned_; }
     bool isDistant() const { return !surface_; }
     const dvec3& direction() const { return direction_; }  // of a distant source
+    // Of a surface: the middle of its shape and its size (the square root of its area, a sphere's diameter).
+    const dvec3& center() const { return center_; }
+    double size() const { return size_; }
     const SurfaceId& surface() const { return surface_; }  // none for distant sources
     int object() const { return object_; }
     const Emitter& emitter() const { return *emitter_; }

@@ -1,10 +1,19 @@
 // Distances along a ray drawn where a piecewise-constant majorant σ̄ puts the first tentative collision,
 // conditioned to fall before the ray's end: density σ̄(t) e^{−τ̄(t)} / (1 − e^{−τ̄(end)}), τ̄ the majorant's
 // optical depth from the start. Every draw lands in the medium, so thin media are sampled as well as thick.
-// And distances drawn uniformly over the same stretches, its guard where the majorant is loose.
+// And distances drawn uniformly over the same stretches, its guard where the majorant is loose; and drawn
+// in proportion to 1/r² from a small source beside the ray, to find the light it scatters from the media near it.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <span>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/ray.h"
+#include "medium/henyey_greenstein.h"
 
 #include "medium/null_collisions.h"
 
@@ -74,6 +83,68 @@ public:
 private:
     std::span<const MajorantSegment> segments_;
     double length_ = 0;
+};
+
+// Distances over the stretches `segments` cover, drawn in proportion to 1/r² from a point beside the ray
+// (equiangular sampling: Kulla & Fajardo 2012, "Importance sampling techniques for path tracing in
+// participating media") times the phase function that turns the point's light toward the ray's origin and
+// the segment's majorant: so the media a small source lights most, and scatters most toward the eye, get most
+// draws, however short a stretch of the ray they are. In the angle φ under which the point sees t (0 at its
+// foot t_c on the ray, h its distance from it), r² = h²/cos²φ and dt/dφ = h/cos²φ, so h/r² is uniform in φ;
+// the phase function's cosine is −sin φ. Drawn piecewise uniform in φ, pieces of at most π/32 (one per
+// segment when isotropic) weighted by the majorant times the phase at their middle.
+class EquiangularCollision {
+public:
+    // `minDistance` > 0 keeps h off 0 (a point on the ray would make the density a delta); `phase` the
+    // scattering the draws should follow (HenyeyGreenstein(0): plain equiangular sampling).
+    EquiangularCollision(std::span<const MajorantSegment> segments, const Ray& ray, const dvec3& point,
+                         double minDistance, const HenyeyGreenstein& phase) {
+        foot_ = glm::dot(point - ray.org, ray.dir);
+        h_ = std::max(glm::length(point - (ray.org + foot_ * ray.dir)), minDistance);
+        const double most = phase.g() == 0 ? std::numbers::pi : std::numbers::pi / 32;
+        for (const MajorantSegment& s : segments) {
+            double a = angleOf(s.t0), b = angleOf(s.t1);
+            int n = int(std::ceil((b - a) / most));
+            for (int i = 0; i < n; ++i) {
+                Piece p{a + (b - a) * i / n, a + (b - a) * (i + 1) / n};
+                p.t0 = i == 0 ? s.t0 : pieces_.back().t1;
+                p.t1 = i == n - 1 ? s.t1 : foot_ + h_ * std::tan(p.angle1);
+                p.weight = s.majorant * phase.value(-std::sin(0.5 * (p.angle0 + p.angle1)));
+                total_ += p.weight * (p.angle1 - p.angle0);
+                p.cumulative = total_;
+                pieces_.push_back(p);
+            }
+        }
+    }
+
+    // ∫ σ̄ p(−sin φ) dφ over the stretches, σ̄ the majorant, p the phase function: ∫ σ̄ p h/r² dt, about the
+    // source's single scattering toward the origin per unit intensity, unattenuated, times h.
+    double phaseAngle() const { return total_; }
+    double distanceFromRay() const { return h_; }
+    double sample(double u) const {
+        double target = u * total_;
+        auto p = std::lower_bound(pieces_.begin(), pieces_.end(), target,
+                                  [](const Piece& q, double x) { return q.cumulative < x; });
+        if (p == pieces_.end()) --p;
+        double before = p->cumulative - p->weight * (p->angle1 - p->angle0);
+        double angle = std::clamp(p->angle0 + (target - before) / p->weight, p->angle0, p->angle1);
+        return std::clamp(foot_ + h_ * std::tan(angle), p->t0, p->t1);
+    }
+    double density(double t) const {
+        auto p = std::lower_bound(pieces_.begin(), pieces_.end(), t, [](const Piece& q, double x) { return q.t1 < x; });
+        if (p == pieces_.end() || t < p->t0) return 0;
+        return p->weight / total_ * h_ / (h_ * h_ + (t - foot_) * (t - foot_));
+    }
+
+private:
+    struct Piece {
+        double angle0, angle1;  // φ across the piece, and the same as distances
+        double t0 = 0, t1 = 0;
+        double weight = 0, cumulative = 0;  // the phase; ∫ weight dφ up to angle1
+    };
+    double angleOf(double t) const { return std::isfinite(t) ? std::atan((t - foot_) / h_) : std::numbers::pi / 2; }
+    std::vector<Piece> pieces_;
+    double foot_ = 0, h_ = 1, total_ = 0;
 };
 
 }  // namespace brume

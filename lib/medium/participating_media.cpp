@@ -67,6 +67,15 @@ bool ParticipatingMedia::scatters(const HomogeneousMedium& h) const {
            std::any_of(smoke_.begin(), smoke_.end(), [](const SmokeVolume& v) { return !v.albedo().isBlack(); });
 }
 
+double ParticipatingMedia::asymmetry(const Ray& ray, double start, double end, const HomogeneousMedium& h) const {
+    double sum = 0, weights = 0;
+    for (const SmokeVolume& v : smoke_) {
+        double w = brightness(v.albedo());
+        if (w > 0 && crosses(v.bounds(), ray, start, end)) sum += w * v.g(), weights += w;
+    }
+    return weights > 0 ? sum / weights : h.g;
+}
+
 void ParticipatingMedia::majorants(const Ray& ray, double start, double end, const HomogeneousMedium* h,
                                    std::vector<MajorantSegment>& out, Band band) const {
     thread_local std::vector<MajorantSegment> smoke, scratch;

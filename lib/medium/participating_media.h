@@ -26,6 +26,9 @@ public:
     Spectrum emission(const dvec3& p) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
     bool scatters(const HomogeneousMedium& h) const;
+    // The Henyey–Greenstein g of what scatters along [start, end], to guide sampling: the mean g of the
+    // scattering smoke whose box the ray crosses, weighted by the brightness of its albedo, else that of `h`.
+    double asymmetry(const Ray& ray, double start, double end, const HomogeneousMedium& h) const;
 
     // Stretches of [start, end] in order, each with a majorant of the extinction of `h` (if given) plus the smoke:
     // in every band (Band::Largest), or in the band of least positive extinction of each medium
