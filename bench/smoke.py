@@ -10,13 +10,15 @@ Scenes (../shared/data):
   halo      a small sphere lamp (R 5 cm) in a room filled with fog (-me .3, albedo .9, g .6: Radiance's
             global medium), 48 view rays past it, -ab 0 -ms .5: the halo, where in-scattering samples drawn
             toward the lamp (equiangular, shaped by the phase) matter most.
-  bulb      the plume's hall lit by a sphere bulb (R 0.5) inside the plume instead of the ceiling panel.
+  bulb      the plume's hall lit by a sphere bulb (R 0.5) inside the plume instead of the ceiling panel, a
+            metre beside one of the rays (a ray meeting it would see it only through the plume's
+            transmittance, whose noise would swamp the rest).
   Each ray is repeated r = 1, 4, 16, 64 times and its mean compared with a reference of 2000 repeats: the
   error is the RMS over the rays of (value − reference), over the mean reference luminance (rays meeting an
   unlit ceiling have a reference near 0, so errors relative to each ray mean nothing there). The majorant
   grid has cells of 8 voxels (-mc 8, the default) or one cell over the grid's box (-mc 0: no empty-space
-  skipping), and at 64 repeats also of 1, 2, 4 and 16 voxels (corridor and plume; halo and bulb: -mc 8 only). One thread, CPU seconds (user + system, loading
-  included).
+  skipping), and at 64 repeats also of 1, 2, 4 and 16 voxels (corridor and plume; halo and bulb: -mc 8
+  only). One thread, CPU seconds (user + system, loading included).
   far       the corridor moved 100 m away from the smoke (xform -t -100 0 0): rtrace -I -ab 2 -aa 0 -ad 2048 on
             200 sensors, with and without the smoke object in the scene, and one sensor (the cost of loading the
             grids); best of --repeat runs.
@@ -45,7 +47,7 @@ PANEL = """void light panel 0 0 3 50 50 50
 panel polygon lamp 0 0 12  -20 99.9 -15  0 99.9 -15  0 99.9 15  -20 99.9 15
 """
 BULB = """void light bulb 0 0 3 20000 20000 20000
-bulb sphere lamp 0 0 4  -3 45 5  0.5
+bulb sphere lamp 0 0 4  -3 51.5 5  0.5
 """
 FOG_ROOM = """void light bulb 0 0 3 2000 2000 2000
 bulb sphere b 0 0 4  0 0 2.5  0.05

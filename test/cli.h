@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "scratch_dir.h"
+
 namespace brume_test {
 
 struct Output {
@@ -18,13 +20,6 @@ struct Output {
 inline std::string slurp(const std::filesystem::path& path) {
     std::ifstream f(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-// A scratch directory of this test process, one per `tag`.
-inline std::filesystem::path scratchDir(const std::string& tag) {
-    auto dir = std::filesystem::temp_directory_path() / ("brume_" + tag + "_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
 }
 
 // Runs the shell command `line`, its standard output and error captured through files in `scratch`.

@@ -1,13 +1,13 @@
 #include "render/camera_path.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include <glm/geometric.hpp>
 
+#include "scratch_dir.h"
 #include "util/error.h"
 
 using namespace brume;
@@ -15,7 +15,7 @@ using namespace brume;
 namespace {
 
 std::string pathFile(const std::string& text) {
-    auto p = std::filesystem::temp_directory_path() / ("brume_path_" + std::to_string(::getpid()) + ".txt");
+    auto p = brume_test::scratchDir("camera_path") / "path.txt";
     std::ofstream(p) << text;
     return p.string();
 }

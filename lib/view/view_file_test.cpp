@@ -10,6 +10,7 @@
 #include <fstream>
 #include <vector>
 
+#include "scratch_dir.h"
 #include "util/error.h"
 
 using namespace brume;
@@ -19,9 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("brume_view_file_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir / name;
+    return brume_test::scratchDir("view_file") / name;
 }
 
 std::string write(const std::string& name, const std::string& text) {
