@@ -178,10 +178,14 @@ Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const
         // One stratified number picks the strategy, by the shares in turn, and what is left of it the point
         // that strategy draws: each strategy's draws stay stratified among themselves.
         double u = (k + ctx.rng.uniform()) / n, t;
-        if (u < toward) t = drawToward(sources, u / toward);
-        else if ((u -= toward) < uniform) t = even.sample(u / uniform);
-        else if (u = (u - uniform) / forced; mixed) t = u < 0.5 ? far.sample(2 * u) : near.sample(2 * u - 1);
-        else t = near.sample(u);
+        if (u < toward) {
+            t = drawToward(sources, u / toward);
+        } else if ((u -= toward) < uniform) {
+            t = even.sample(u / uniform);
+        } else {
+            u = (u - uniform) / forced;  // forced: by the dense band's majorant, or half by the clear one's
+            t = !mixed ? near.sample(u) : u < 0.5 ? far.sample(2 * u) : near.sample(2 * u - 1);
+        }
         double density = uniform * even.density(t) +
                          forced * (mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t));
         for (const SourceDistance& s : sources) density += toward * s.share * s.distance.density(t);
