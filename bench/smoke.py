@@ -32,7 +32,8 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench import RESULTS, ROOT, Timer, best_of, git_commit, lux, matplotlib_plot, read_rgb, write_result  # noqa: E402
+from bench import (RESULTS, ROOT, Timer, best_of, find_radiance, git_commit, lux, matplotlib_plot, read_rgb,  # noqa: E402
+                   write_result)
 
 CORRIDOR = os.path.join(ROOT, "examples", "corridor")
 VDB = os.path.join(ROOT, "..", "shared", "data", "vdb")
@@ -49,6 +50,19 @@ panel polygon lamp 0 0 12  -20 99.9 -15  0 99.9 -15  0 99.9 15  -20 99.9 15
 BULB = """void light bulb 0 0 3 20000 20000 20000
 bulb sphere lamp 0 0 4  -3 51.5 5  0.5
 """
+def box(modifier, name, lo, hi):
+    """Six polygons facing out of the box lo–hi (Radiance's genbox, without its options)."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    faces = [[(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)], [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
+             [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)], [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
+             [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)], [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)]]
+    return "".join(f"{modifier} polygon {name}.{i} 0 0 12 " + "  ".join("%g %g %g" % v for v in f) + "\n"
+                   for i, f in enumerate(faces))
+
+
+# The fog is Radiance's global medium (-me -ma -mg); a mist box listing the lamp, a millimetre inside the walls,
+# makes Radiance scatter the lamp's light in it too (it scatters only the sources a mist lists) and changes
+# nothing in Brume (which scatters every source's light).
 FOG_ROOM = """void light bulb 0 0 3 2000 2000 2000
 bulb sphere b 0 0 4  0 0 2.5  0.05
 void plastic grey 0 0 5 .5 .5 .5 0 0
@@ -58,7 +72,8 @@ grey polygon west 0 0 12  -5 -5 0  -5 5 0  -5 5 4  -5 -5 4
 grey polygon east 0 0 12  5 -5 0  5 -5 4  5 5 4  5 5 0
 grey polygon north 0 0 12  -5 5 0  -5 5 4  5 5 4  5 5 0
 grey polygon south 0 0 12  -5 -5 0  5 -5 0  5 -5 4  -5 -5 4
-"""
+void mist fog 1 b 0 0
+""" + box("fog", "fogbox", (-4.999, -4.999, 0.001), (4.999, 4.999, 3.999))
 HALL = """void plastic grey 0 0 5 .5 .5 .5 0 0
 grey polygon floor 0 0 12  -40 -15 -35  25 -15 -35  25 -15 35  -40 -15 35
 grey polygon ceiling 0 0 12  -40 100 -35  -40 100 35  25 100 35  25 100 -35
@@ -114,6 +129,31 @@ def run(bin_dir, tmp, case, repeats, cells):
     cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-n", "1", "-mc", str(cells)] + options + files
     t = Timer(cmd, path, env=dict(os.environ, RAYPATH=raypath))
     return luminances(t.out, repeats), t.cpu
+
+
+def radiance_ladder(rad, tmp, case):
+    """The case by Radiance's rtrace (the same options, -u+ so that repeats differ) against its own reference of
+    REFERENCE_REPEATS repeats: Radiance dims source light by absorption only, so its answer is not Brume's.
+    [(cpu, error)] over LADDER, and the reference's CPU time."""
+    name, files, options, rays, _, _ = case
+    octree = os.path.join(tmp, "radiance.oct")
+    with open(octree, "wb") as f:
+        subprocess.run([rad["oconv"], "-f"] + files, stdout=f, env=rad["env"], check=True)
+    path = os.path.join(tmp, "rays.txt")
+
+    def one(repeats):
+        with open(path, "w") as f:
+            for r in rays:
+                f.write(("%g %g %g %g %g %g\n" % r) * repeats)
+        t = Timer([rad["rtrace"], "-h", "-u+"] + options + [octree], path, env=rad["env"])
+        return luminances(t.out, repeats), t.cpu
+    reference, ref_cpu = one(REFERENCE_REPEATS)
+    ladder = []
+    for r in LADDER:
+        values, cpu = one(r)
+        ladder.append((cpu, normalised_rms(values, reference)))
+        print(f"  {name}, Radiance x{r}: {cpu:.2f} s, {100 * ladder[-1][1]:.2f} %", file=sys.stderr)
+    return ladder, ref_cpu
 
 
 def normalised_rms(values, reference):
@@ -200,12 +240,23 @@ def main():
             # Time at equal error: variance ∝ 1/time, so time × error² compares the two at any error.
             notes.append(note + f"; at {LADDER[-1]} repeats -mc 0 takes {full[0] / skip[0]:.2f}x the time of -mc 8, and "
                          f"{full[0] * full[1] ** 2 / (skip[0] * skip[1] ** 2):.2f}x its time at equal error (time × error²).")
+        rad, versus = find_radiance(), "Radiance not found (RADIANCE_BIN or /tmp/radiance/bin): no comparison."
+        if rad:
+            halo = next(c for c in scenes(tmp) if c[0] == "halo")
+            ladder, ref_cpu = radiance_ladder(rad, tmp, halo)
+            series["halo, Radiance"] = ladder
+            rows += [f"| halo | Radiance | {r} | {cpu:.2f} s | {100 * err:.2f} % |" for r, (cpu, err) in zip(LADDER, ladder)]
+            (b_cpu, b_err), (r_cpu, r_err) = series["halo, -mc 8"][-1], ladder[-1]
+            versus = (f"Radiance's rtrace on the halo (the same options, against its own reference of {ref_cpu:.0f} CPU s: "
+                      f"it dims the lamp's light by absorption only): at {LADDER[-1]} repeats {r_cpu:.2f} s, "
+                      f"{100 * r_err:.2f} %; Brume {b_cpu:.2f} s, {100 * b_err:.2f} %: Brume reaches an equal error "
+                      f"{r_cpu * r_err ** 2 / (b_cpu * b_err ** 2):.1f}x sooner (time × error²).")
         without, with_smoke, start, start_smoke = far_cost(args.bin, tmp, args.repeat)
     text = (f"# Smoke: time against error\n\nBrume {git_commit()}, one thread (bench/smoke.py; its docstring says what "
             f"is measured). Each ray's mean of r repeats against a reference of {REFERENCE_REPEATS} repeats; error: "
             "RMS over the 48 rays over the mean reference luminance.\n\n"
             "| scene | majorant cells | repeats | CPU | error |\n|---|---|---|---|---|\n" + "\n".join(rows) +
-            "\n\n" + "\n".join(notes) +
+            "\n\n" + "\n".join(notes) + "\n\n" + versus +
             f"\n\nCell size (-mc, voxels) at {LADDER[-1]} repeats: CPU, error, and time × error² relative to -mc 8 (below "
             "1: a given error sooner):\n\n| scene | " + " | ".join(f"-mc {c}" for c in SWEEP_COLUMNS) + " |\n|---" +
             "|---" * len(SWEEP_COLUMNS) + "|\n" + "\n".join(sweep) +
