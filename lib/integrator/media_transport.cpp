@@ -5,6 +5,7 @@
 // with many others (diffuse and sampled ones) take delta tracking's first collision or the surface behind.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "integrator/integrator.h"
 #include "integrator/path_state.h"
@@ -60,15 +61,6 @@ std::vector<SourceDistance> sourceDistances(const std::vector<Light>& lights, co
     }
     for (SourceDistance& s : out) s.share /= total;
     return out;
-}
-
-// A distance drawn toward the source whose share holds u (in [0, 1)), by what is left of u within that share.
-double drawToward(const std::vector<SourceDistance>& sources, double u) {
-    for (const SourceDistance& s : sources) {
-        if (u < s.share || &s == &sources.back()) return s.distance.sample(std::min(u / s.share, 1.0));
-        u -= s.share;
-    }
-    return 0;
 }
 
 }  // namespace
@@ -143,16 +135,17 @@ int Integrator::inScatteringSamples(double length) const {
     return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
 }
 
-// ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), stratified,
-// at points drawn by a mixture of strategies, weighed by the mixture's density (one-sample MIS): forced into
-// the medium (ForcedCollision) by the majorant of the largest band, and of the clearest one (clear bands see
-// far, dense ones near, and T_λ σ_s / density stays bounded in every band); uniform in length with half the
-// share of the ray where the majorant exceeds the extinction (smoke's cells): drawn by such a majorant alone,
-// light deep in thin smoke would come from rare draws of huge weight; and, with nine draws in ten, toward the
-// sources (EquiangularCollision), each by its rough share of the single scattering: L_s of a lamp's light
-// falls as 1/r² from it, which the others do not see, and which makes most of the noise of a ray passing a lamp.
-// (Nine in ten, not half: measured better or equal in every bench/smoke.py case and with a lamp hidden in a
-// box, whose draws are wasted; toward a large or far source the draws spread along the ray like the guard.)
+// ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), at points
+// drawn by a mixture of strategies, weighed by the mixture's density (MIS with the balance heuristic), and
+// stratified over the whole mixture (DistanceMixture): forced into the medium (ForcedCollision) by the majorant
+// of the largest band, and of the clearest one (clear bands see far, dense ones near, and T_λ σ_s / density
+// stays bounded in every band); uniform in length with half the share of the ray where the majorant exceeds
+// the extinction (smoke's cells): drawn by such a majorant alone, light deep in thin smoke would come from rare
+// draws of huge weight; and, nine draws in ten, toward the sources (EquiangularCollision), each by its rough
+// share of the single scattering: L_s of a lamp's light falls as 1/r² from it, which the others do not see,
+// and which makes most of the noise of a ray passing a lamp. (Nine in ten, not half: better or equal in every
+// bench/smoke.py case and with a lamp hidden in a box, whose draws are wasted; toward a large or far source
+// the draws spread along the ray much as the guards' do.)
 Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                  const PathState& state, Context& ctx) const {
     std::vector<MajorantSegment> dense, clear;
@@ -174,23 +167,18 @@ Spectrum Integrator::inScattered(const Ray& ray, double start, double end, const
     double toward = sources.empty() ? 0 : 0.9;
     double uniform = std::isfinite(even.length()) ? (1 - toward) * 0.5 * loose / even.length() : 0;  // none out to infinity
     double forced = 1 - toward - uniform;
+    DistanceMixture mixture(std::min(dense.front().t0, clear.empty() ? dense.front().t0 : clear.front().t0),
+                            std::max(dense.back().t1, clear.empty() ? dense.back().t1 : clear.back().t1));
+    for (const SourceDistance& s : sources) mixture.add(toward * s.share, &s.distance);
+    mixture.add(uniform, &even);
+    mixture.add(mixed ? forced / 2 : forced, &near);
+    if (mixed) mixture.add(forced / 2, &far);
     int n = inScatteringSamples(even.length());
     Spectrum sum(0.f);
+    double t = -std::numeric_limits<double>::infinity();
     for (int k = 0; k < n; ++k) {
-        // One stratified number picks the strategy, by the shares in turn, and what is left of it the point
-        // that strategy draws: each strategy's draws stay stratified among themselves.
-        double u = (k + ctx.rng.uniform()) / n, t;
-        if (u < toward) {
-            t = drawToward(sources, u / toward);
-        } else if ((u -= toward) < uniform) {
-            t = even.sample(u / uniform);
-        } else {
-            u = (u - uniform) / forced;  // forced: by the dense band's majorant, or half by the clear one's
-            t = !mixed ? near.sample(u) : u < 0.5 ? far.sample(2 * u) : near.sample(2 * u - 1);
-        }
-        double density = uniform * even.density(t) +
-                         forced * (mixed ? 0.5 * (near.density(t) + far.density(t)) : near.density(t));
-        for (const SourceDistance& s : sources) density += toward * s.share * s.distance.density(t);
+        t = mixture.sample((k + ctx.rng.uniform()) / n, t);  // in order: each draw searched for from the last
+        double density = mixture.density(t);
         if (!(density > 0)) continue;
         Spectrum tr = mediaTransmittance(ray, start, t, h, ctx);
         if (tr.isBlack()) continue;

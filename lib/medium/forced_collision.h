@@ -6,8 +6,10 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <span>
+#include <variant>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -18,6 +20,10 @@
 #include "medium/null_collisions.h"
 
 namespace brume {
+
+struct CdfAndDensity {
+    double cdf, density;
+};
 
 class ForcedCollision {
 public:
@@ -41,14 +47,19 @@ public:
         }
         return 0;
     }
-    double density(double t) const {
+    double density(double t) const { return cdfAndDensity(t).density; }
+    // The chance of a draw before t, and the density at t.
+    CdfAndDensity cdfAndDensity(double t) const {
         double depth = 0;
         for (const MajorantSegment& s : segments_) {
-            if (t < s.t0) return 0;
-            if (t <= s.t1) return s.majorant * std::exp(-(depth + s.majorant * (t - s.t0))) / reach_;
+            if (t < s.t0) return {-std::expm1(-depth) / reach_, 0};
+            if (t <= s.t1) {
+                double d = depth + s.majorant * (t - s.t0);
+                return {-std::expm1(-d) / reach_, s.majorant * std::exp(-d) / reach_};
+            }
             depth += s.majorant * (s.t1 - s.t0);
         }
-        return 0;
+        return {1, 0};
     }
 
 private:
@@ -74,10 +85,15 @@ public:
         }
         return 0;
     }
-    double density(double t) const {
-        for (const MajorantSegment& s : segments_)
-            if (t >= s.t0 && t <= s.t1) return 1 / length_;
-        return 0;
+    double density(double t) const { return cdfAndDensity(t).density; }
+    CdfAndDensity cdfAndDensity(double t) const {
+        double before = 0;
+        for (const MajorantSegment& s : segments_) {
+            if (t < s.t0) return {before / length_, 0};
+            if (t <= s.t1) return {(before + t - s.t0) / length_, 1 / length_};
+            before += s.t1 - s.t0;
+        }
+        return {1, 0};
     }
 
 private:
@@ -130,10 +146,15 @@ public:
         double angle = std::clamp(p->angle0 + (target - before) / p->weight, p->angle0, p->angle1);
         return std::clamp(foot_ + h_ * std::tan(angle), p->t0, p->t1);
     }
-    double density(double t) const {
+    double density(double t) const { return cdfAndDensity(t).density; }
+    CdfAndDensity cdfAndDensity(double t) const {
         auto p = std::lower_bound(pieces_.begin(), pieces_.end(), t, [](const Piece& q, double x) { return q.t1 < x; });
-        if (p == pieces_.end() || t < p->t0) return 0;
-        return p->weight / total_ * h_ / (h_ * h_ + (t - foot_) * (t - foot_));
+        if (p == pieces_.end()) return {1, 0};
+        double before = p->cumulative - p->weight * (p->angle1 - p->angle0);
+        if (t < p->t0) return {before / total_, 0};
+        double angle = std::clamp(std::atan((t - foot_) / h_), p->angle0, p->angle1);
+        return {(before + p->weight * (angle - p->angle0)) / total_,
+                p->weight / total_ * h_ / (h_ * h_ + (t - foot_) * (t - foot_))};
     }
 
 private:
@@ -145,6 +166,58 @@ private:
     double angleOf(double t) const { return std::isfinite(t) ? std::atan((t - foot_) / h_) : std::numbers::pi / 2; }
     std::vector<Piece> pieces_;
     double foot_ = 0, h_ = 1, total_ = 0;
+};
+
+// A mixture of the samplers above, drawn by inverting its cumulative distribution Σ share_i F_i(t) (Newton's
+// method, bisection where it strays): stratified numbers u then give draws stratified over the whole mixture.
+// Drawn strategy by strategy instead, a strategy with a small share (a guard) would get one or two draws of
+// its own and their noise, and the count each strategy got would vary with the draws.
+class DistanceMixture {
+public:
+    using Sampler = std::variant<const ForcedCollision*, const UniformCollision*, const EquiangularCollision*>;
+    // Every component's draws lie in [lo, hi] (hi may be infinite).
+    DistanceMixture(double lo, double hi) : lo_(lo), hi_(hi) {}
+
+    void add(double share, Sampler sampler) {
+        if (share > 0) components_.push_back({share, sampler});
+    }
+    double density(double t) const { return cdfAndDensity(t).density; }
+    CdfAndDensity cdfAndDensity(double t) const {
+        CdfAndDensity sum{0, 0};
+        for (const Component& c : components_) {
+            CdfAndDensity f = std::visit([t](auto* s) { return s->cdfAndDensity(t); }, c.sampler);
+            sum.cdf += c.share * f.cdf, sum.density += c.share * f.density;
+        }
+        return sum;
+    }
+    // The distance where the cumulative distribution reaches u, in [0, 1); `from`, if known, a distance at or
+    // before it (the previous draw, when drawing stratified numbers in order), where the search starts.
+    double sample(double u, double from = -std::numeric_limits<double>::infinity()) const {
+        double a = std::max(lo_, from), b = hi_;
+        for (int i = 0; !std::isfinite(b) && i < 1100; ++i) {  // an end to bracket infinite rays with
+            double far = lo_ + std::ldexp(1.0, i);
+            if (cdfAndDensity(far).cdf >= u) b = far;
+        }
+        if (!std::isfinite(b)) return lo_;
+        double x = from > lo_ ? a : 0.5 * (a + b);
+        for (int i = 0; i < 100 && b - a > 1e-13 * std::max(1.0, std::abs(x)); ++i) {
+            CdfAndDensity f = cdfAndDensity(x);
+            double g = f.cdf - u;
+            if (std::abs(g) <= 1e-14) break;
+            (g < 0 ? a : b) = x;
+            double next = f.density > 0 ? x - g / f.density : a - 1;
+            x = next > a && next < b ? next : 0.5 * (a + b);
+        }
+        return x;
+    }
+
+private:
+    struct Component {
+        double share;
+        Sampler sampler;
+    };
+    double lo_, hi_;
+    std::vector<Component> components_;
 };
 
 }  // namespace brume

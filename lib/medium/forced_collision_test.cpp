@@ -102,3 +102,34 @@ TEST(EquiangularCollision, InfiniteRayEndsAtAQuarterTurn) {
         EXPECT_GT(toward.density(t), 0);
     }
 }
+
+// A mixture of all three, drawn by inverting its cumulative distribution, with stratified numbers in order
+// (each draw searched for from the last, as inScattered draws them): the draws follow the mixture's density.
+TEST(DistanceMixture, DrawsFollowTheMixturesDensity) {
+    const Ray ray(dvec3(1, 2, 3), glm::normalize(dvec3(1, -1, 2)));
+    ForcedCollision forced(kSegments);
+    UniformCollision even(kSegments);
+    EquiangularCollision toward(kSegments, ray, ray.org + 2.5 * ray.dir + dvec3(0.3, 0.3, 0), 0.05,
+                                HenyeyGreenstein(0.6));
+    DistanceMixture mixture(kSegments.front().t0, kSegments.back().t1);
+    mixture.add(0.8, &toward);
+    mixture.add(0.05, &even);
+    mixture.add(0.15, &forced);
+    mixture.add(0, &even);  // (no share: left out)
+    double last = -std::numeric_limits<double>::infinity();
+    expectDrawsFollowTheDensity([&](double u) { return last = mixture.sample(u, last); },
+                                [&](double t) { return mixture.density(t); });
+    EXPECT_NEAR(mixture.density(2.2), 0.8 * toward.density(2.2) + 0.05 * even.density(2.2) + 0.15 * forced.density(2.2),
+                1e-12);
+}
+
+// Over a ray to infinity the search first finds an end beyond the draw.
+TEST(DistanceMixture, InfiniteRaysAreBracketed) {
+    const std::vector<MajorantSegment> open = {{0, std::numeric_limits<double>::infinity(), 0.1, 0.1}};
+    ForcedCollision forced(open);
+    DistanceMixture mixture(0, std::numeric_limits<double>::infinity());
+    mixture.add(1, &forced);
+    for (double u : {0.0, 0.5, 0.999999})
+        EXPECT_NEAR(mixture.sample(u), -std::log1p(-u) / 0.1, 1e-6 * (1 - std::log1p(-u) / 0.1)) << u;
+}
+
