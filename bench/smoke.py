@@ -114,10 +114,15 @@ def scenes(tmp):
         ("bulb in the plume", [scene("bulb.rad", BULB + HALL)], ["-ab", "0", "-ms", "1"], hall_rays, VDB, False)]
 
 
-def luminances(text, repeats):
-    """Mean photopic luminance (cd/m²) of each ray's repeats."""
+def luminances(text, repeats, spread=False):
+    """Mean photopic luminance (cd/m²) of each ray's repeats; with spread, instead the sum over the rays of the
+    variance of one trace, over the squared mean luminance (time × that compares estimators at equal error)."""
     values = [lux(rgb) for rgb in read_rgb(text)]  # lux's factors are luminance's too
-    return [sum(values[k:k + repeats]) / repeats for k in range(0, len(values), repeats)]
+    groups = [values[k:k + repeats] for k in range(0, len(values), repeats)]
+    if not spread:
+        return [sum(g) / repeats for g in groups]
+    mean = sum(values) / len(values)
+    return sum(sum((v - sum(g) / repeats) ** 2 for v in g) / repeats for g in groups) / mean ** 2
 
 
 def run(bin_dir, tmp, case, repeats, cells):
@@ -134,7 +139,7 @@ def run(bin_dir, tmp, case, repeats, cells):
 def radiance_ladder(rad, tmp, case):
     """The case by Radiance's rtrace (the same options, -u+ so that repeats differ) against its own reference of
     REFERENCE_REPEATS repeats: Radiance dims source light by absorption only, so its answer is not Brume's.
-    [(cpu, error)] over LADDER, and the reference's CPU time."""
+    [(cpu, error)] over LADDER, the reference's CPU time and its (cpu, spread) (see luminances)."""
     name, files, options, rays, _, _ = case
     octree = os.path.join(tmp, "radiance.oct")
     with open(octree, "wb") as f:
@@ -145,15 +150,27 @@ def radiance_ladder(rad, tmp, case):
         with open(path, "w") as f:
             for r in rays:
                 f.write(("%g %g %g %g %g %g\n" % r) * repeats)
-        t = Timer([rad["rtrace"], "-h", "-u+"] + options + [octree], path, env=rad["env"])
-        return luminances(t.out, repeats), t.cpu
-    reference, ref_cpu = one(REFERENCE_REPEATS)
+        return Timer([rad["rtrace"], "-h", "-u+"] + options + [octree], path, env=rad["env"])
+    t = one(REFERENCE_REPEATS)
+    reference = luminances(t.out, REFERENCE_REPEATS)
     ladder = []
     for r in LADDER:
-        values, cpu = one(r)
-        ladder.append((cpu, normalised_rms(values, reference)))
-        print(f"  {name}, Radiance x{r}: {cpu:.2f} s, {100 * ladder[-1][1]:.2f} %", file=sys.stderr)
-    return ladder, ref_cpu
+        run_r = one(r)
+        ladder.append((run_r.cpu, normalised_rms(luminances(run_r.out, r), reference)))
+        print(f"  {name}, Radiance x{r}: {run_r.cpu:.2f} s, {100 * ladder[-1][1]:.2f} %", file=sys.stderr)
+    return ladder, t.cpu, (t.cpu, luminances(t.out, REFERENCE_REPEATS, spread=True))
+
+
+def brume_spread(bin_dir, tmp, case, repeats):
+    """(cpu, spread) of Brume's rtrace on the case (see luminances)."""
+    _, files, options, rays, raypath, _ = case
+    path = os.path.join(tmp, "rays.txt")
+    with open(path, "w") as f:
+        for r in rays:
+            f.write(("%g %g %g %g %g %g\n" % r) * repeats)
+    t = Timer([os.path.join(bin_dir, "rtrace"), "-h", "-n", "1"] + options + files, path,
+              env=dict(os.environ, RAYPATH=raypath))
+    return t.cpu, luminances(t.out, repeats, spread=True)
 
 
 def normalised_rms(values, reference):
@@ -243,14 +260,19 @@ def main():
         rad, versus = find_radiance(), "Radiance not found (RADIANCE_BIN or /tmp/radiance/bin): no comparison."
         if rad:
             halo = next(c for c in scenes(tmp) if c[0] == "halo")
-            ladder, ref_cpu = radiance_ladder(rad, tmp, halo)
+            ladder, ref_cpu, (r_cpu2, r_spread) = radiance_ladder(rad, tmp, halo)
+            b_cpu2, b_spread = brume_spread(args.bin, tmp, halo, REFERENCE_REPEATS)
             series["halo, Radiance"] = ladder
             rows += [f"| halo | Radiance | {r} | {cpu:.2f} s | {100 * err:.2f} % |" for r, (cpu, err) in zip(LADDER, ladder)]
             (b_cpu, b_err), (r_cpu, r_err) = series["halo, -mc 8"][-1], ladder[-1]
-            versus = (f"Radiance's rtrace on the halo (the same options, against its own reference of {ref_cpu:.0f} CPU s: "
+            versus = (f"Radiance's rtrace on the halo (the same options, against its own reference of {ref_cpu:.1f} CPU s: "
                       f"it dims the lamp's light by absorption only): at {LADDER[-1]} repeats {r_cpu:.2f} s, "
-                      f"{100 * r_err:.2f} %; Brume {b_cpu:.2f} s, {100 * b_err:.2f} %: Brume reaches an equal error "
-                      f"{r_cpu * r_err ** 2 / (b_cpu * b_err ** 2):.1f}x sooner (time × error²).")
+                      f"{100 * r_err:.2f} %; Brume {b_cpu:.2f} s, {100 * b_err:.2f} % (the times mostly start-up: Brume "
+                      f"builds its scene from the .rad file, Radiance reads an octree made beforehand). Over "
+                      f"{REFERENCE_REPEATS} repeats: Brume {b_cpu2:.2f} s, Radiance {r_cpu2:.2f} s; the variance of one "
+                      f"trace summed over the rays, over the squared mean: Brume {b_spread:.4f}, Radiance {r_spread:.4f}; "
+                      f"Radiance reaches an equal error {b_cpu2 * b_spread / (r_cpu2 * r_spread):.1f}x sooner "
+                      "(time × variance).")
         without, with_smoke, start, start_smoke = far_cost(args.bin, tmp, args.repeat)
     text = (f"# Smoke: time against error\n\nBrume {git_commit()}, one thread (bench/smoke.py; its docstring says what "
             f"is measured). Each ray's mean of r repeats against a reference of {REFERENCE_REPEATS} repeats; error: "
