@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "scene/reader.h"
+#include "scratch_dir.h"
 
 namespace brume {
 namespace {
@@ -111,8 +112,7 @@ TEST(Octree, MissingSceneFileIsAnErrorNamingTheOctree) {
 }
 
 TEST(Octree, StaleOctreeIsAnError) {
-    fs::path dir = fs::path(testing::TempDir()) / "brume_stale_octree";
-    fs::create_directories(dir);
+    fs::path dir = brume_test::scratchDir("stale_octree");
     fs::copy_file(kData + "/scene.oct", dir / "scene.oct", fs::copy_options::overwrite_existing);
     std::ofstream(dir / "scene.rad") << fileBytes(kData + "/scene.rad") << "void plastic extra 0 0 0\n";
     ScopedDirectory cd(dir);
