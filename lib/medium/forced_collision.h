@@ -1,8 +1,9 @@
-// Distances along a ray drawn where a piecewise-constant majorant σ̄ puts the first tentative collision,
-// conditioned to fall before the ray's end: density σ̄(t) e^{−τ̄(t)} / (1 − e^{−τ̄(end)}), τ̄ the majorant's
-// optical depth from the start. Every draw lands in the medium, so thin media are sampled as well as thick.
-// And distances drawn uniformly over the same stretches, its guard where the majorant is loose; and drawn
-// in proportion to 1/r² from a small source beside the ray, to find the light it scatters from the media near it.
+// Distributions of distances along a ray, each given by its cumulative distribution and density, and the
+// mixture of them that draws distances (DistanceMixture): where a piecewise-constant majorant σ̄ puts the first
+// tentative collision, conditioned to fall before the ray's end: density σ̄(t) e^{−τ̄(t)} / (1 − e^{−τ̄(end)}),
+// τ̄ the majorant's optical depth from the start (every draw lands in the medium, so thin media are sampled as
+// well as thick); uniform over the same stretches, its guard where the majorant is loose; and in proportion to
+// 1/r² from a small source beside the ray, to find the light it scatters from the media near it.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -36,18 +37,6 @@ public:
 
     // The chance that a free flight collides before the end (1 over an infinite medium).
     double reach() const { return reach_; }
-    // The distance whose majorant optical depth is −ln(1 − u·reach), u in [0, 1).
-    double sample(double u) const {
-        double target = -std::log1p(-u * reach_), before = 0;
-        for (const MajorantSegment& s : segments_) {
-            double across = s.majorant * (s.t1 - s.t0);
-            if (before + across >= target || &s == &segments_.back())
-                return std::min(s.t0 + (target - before) / s.majorant, s.t1);
-            before += across;
-        }
-        return 0;
-    }
-    double density(double t) const { return cdfAndDensity(t).density; }
     // The chance of a draw before t, and the density at t.
     CdfAndDensity cdfAndDensity(double t) const {
         double depth = 0;
@@ -77,15 +66,6 @@ public:
     }
 
     double length() const { return length_; }
-    double sample(double u) const {
-        double target = u * length_;
-        for (const MajorantSegment& s : segments_) {
-            if (target <= s.t1 - s.t0 || &s == &segments_.back()) return std::min(s.t0 + target, s.t1);
-            target -= s.t1 - s.t0;
-        }
-        return 0;
-    }
-    double density(double t) const { return cdfAndDensity(t).density; }
     CdfAndDensity cdfAndDensity(double t) const {
         double before = 0;
         for (const MajorantSegment& s : segments_) {
@@ -137,16 +117,6 @@ public:
     // source's single scattering toward the origin per unit intensity, unattenuated, times h.
     double phaseAngle() const { return total_; }
     double distanceFromRay() const { return h_; }
-    double sample(double u) const {
-        double target = u * total_;
-        auto p = std::lower_bound(pieces_.begin(), pieces_.end(), target,
-                                  [](const Piece& q, double x) { return q.cumulative < x; });
-        if (p == pieces_.end()) --p;
-        double before = p->cumulative - p->weight * (p->angle1 - p->angle0);
-        double angle = std::clamp(p->angle0 + (target - before) / p->weight, p->angle0, p->angle1);
-        return std::clamp(foot_ + h_ * std::tan(angle), p->t0, p->t1);
-    }
-    double density(double t) const { return cdfAndDensity(t).density; }
     CdfAndDensity cdfAndDensity(double t) const {
         auto p = std::lower_bound(pieces_.begin(), pieces_.end(), t, [](const Piece& q, double x) { return q.t1 < x; });
         if (p == pieces_.end()) return {1, 0};

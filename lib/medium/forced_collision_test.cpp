@@ -1,6 +1,7 @@
-// The distance samplers of in-scattering: each is one strategy of a one-sample MIS mixture, whose weights are
-// the densities the samplers report, so every draw must land in the segments, and the reported density must be
-// the one the draws follow and integrate to 1 there (an error in either biases the in-scattered light).
+// The distance distributions of in-scattering: each is one strategy of a mixture whose weights are the densities
+// the distributions report and whose draws invert their cumulative distributions, so every draw must land in
+// the segments, and the reported density must be the one the draws follow and integrate to 1 there (an error in
+// either biases the in-scattered light).
 #include "medium/forced_collision.h"
 
 #include <gtest/gtest.h>
@@ -54,18 +55,29 @@ void expectDrawsFollowTheDensity(const std::function<double(double)>& sample,
     }
 }
 
+// Draws of one distribution alone, through a mixture of it (how inScattered draws): stratified numbers in
+// order, each searched for from the last draw.
+template <class Distribution>
+void expectDrawsFollowItsDensity(const Distribution& d) {
+    DistanceMixture alone(kSegments.front().t0, kSegments.back().t1);
+    alone.add(1, &d);
+    double last = -std::numeric_limits<double>::infinity();
+    expectDrawsFollowTheDensity([&](double u) { return last = alone.sample(u, last); },
+                                [&](double t) { return d.cdfAndDensity(t).density; });
+}
+
 }  // namespace
 
 TEST(ForcedCollision, DrawsFollowTheMajorantsFirstCollisionWithinTheSegments) {
     ForcedCollision forced(kSegments);
     EXPECT_NEAR(forced.reach(), -std::expm1(-(0.8 * 1.5 + 3.0 + 0.2 * 4.5)), 1e-12);
-    expectDrawsFollowTheDensity([&](double u) { return forced.sample(u); }, [&](double t) { return forced.density(t); });
+    expectDrawsFollowItsDensity(forced);
 }
 
 TEST(UniformCollision, DrawsAreUniformOverTheSegmentsLength) {
     UniformCollision even(kSegments);
     EXPECT_DOUBLE_EQ(even.length(), 1.5 + 1.0 + 4.5);
-    expectDrawsFollowTheDensity([&](double u) { return even.sample(u); }, [&](double t) { return even.density(t); });
+    expectDrawsFollowItsDensity(even);
 }
 
 // Toward a point beside the ray, one beyond its end, and one nearly on it (h held at minDistance); plain, and
@@ -85,8 +97,7 @@ TEST(EquiangularCollision, DrawsFallAsTheInverseSquareFromThePointTimesThePhase)
                     angle += s.majorant * (std::atan((s.t1 - t_c) / h) - std::atan((s.t0 - t_c) / h));
                 EXPECT_NEAR(toward.phaseAngle(), angle / (4 * std::numbers::pi), 1e-12);
             }
-            expectDrawsFollowTheDensity([&](double u) { return toward.sample(u); },
-                                        [&](double t) { return toward.density(t); });
+            expectDrawsFollowItsDensity(toward);
         }
 }
 
@@ -96,10 +107,12 @@ TEST(EquiangularCollision, InfiniteRayEndsAtAQuarterTurn) {
     const Ray ray(dvec3(0), dvec3(1, 0, 0));
     EquiangularCollision toward(open, ray, dvec3(3, 4, 0), 0.01, HenyeyGreenstein(0));
     EXPECT_NEAR(toward.phaseAngle() * 4 * std::numbers::pi / 0.1, std::numbers::pi / 2 + std::atan(3.0 / 4.0), 1e-12);
+    DistanceMixture alone(0, std::numeric_limits<double>::infinity());
+    alone.add(1, &toward);
     for (double u : {0.0, 0.3, 0.999999}) {
-        double t = toward.sample(u);
+        double t = alone.sample(u);
         EXPECT_TRUE(t >= 0 && std::isfinite(t)) << u;
-        EXPECT_GT(toward.density(t), 0);
+        EXPECT_GT(toward.cdfAndDensity(t).density, 0);
     }
 }
 
@@ -119,7 +132,9 @@ TEST(DistanceMixture, DrawsFollowTheMixturesDensity) {
     double last = -std::numeric_limits<double>::infinity();
     expectDrawsFollowTheDensity([&](double u) { return last = mixture.sample(u, last); },
                                 [&](double t) { return mixture.density(t); });
-    EXPECT_NEAR(mixture.density(2.2), 0.8 * toward.density(2.2) + 0.05 * even.density(2.2) + 0.15 * forced.density(2.2),
+    EXPECT_NEAR(mixture.density(2.2),
+                0.8 * toward.cdfAndDensity(2.2).density + 0.05 * even.cdfAndDensity(2.2).density +
+                    0.15 * forced.cdfAndDensity(2.2).density,
                 1e-12);
 }
 
