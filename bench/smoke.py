@@ -125,32 +125,38 @@ def luminances(text, repeats, spread=False):
     return sum(sum((v - sum(g) / repeats) ** 2 for v in g) / repeats for g in groups) / mean ** 2
 
 
-def run(bin_dir, tmp, case, repeats, cells):
-    _, files, options, rays, raypath, _ = case
+def write_rays(tmp, rays, repeats):
+    """The rays, each repeated, as rtrace's input file in tmp."""
     path = os.path.join(tmp, "rays.txt")
     with open(path, "w") as f:
         for r in rays:
             f.write(("%g %g %g %g %g %g\n" % r) * repeats)
+    return path
+
+
+def trace(bin_dir, tmp, case, repeats, cells):
+    """Brume's rtrace on the case's rays, each repeated: the run (Timer)."""
+    _, files, options, rays, raypath, _ = case
     cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-n", "1", "-mc", str(cells)] + options + files
-    t = Timer(cmd, path, env=dict(os.environ, RAYPATH=raypath))
+    return Timer(cmd, write_rays(tmp, rays, repeats), env=dict(os.environ, RAYPATH=raypath))
+
+
+def run(bin_dir, tmp, case, repeats, cells):
+    t = trace(bin_dir, tmp, case, repeats, cells)
     return luminances(t.out, repeats), t.cpu
 
 
 def radiance_ladder(rad, tmp, case):
     """The case by Radiance's rtrace (the same options, -u+ so that repeats differ) against its own reference of
     REFERENCE_REPEATS repeats: Radiance dims source light by absorption only, so its answer is not Brume's.
-    [(cpu, error)] over LADDER, the reference's CPU time and its (cpu, spread) (see luminances)."""
+    [(cpu, error)] over LADDER, the reference's CPU time and its spread (see luminances)."""
     name, files, options, rays, _, _ = case
     octree = os.path.join(tmp, "radiance.oct")
     with open(octree, "wb") as f:
         subprocess.run([rad["oconv"], "-f"] + files, stdout=f, env=rad["env"], check=True)
-    path = os.path.join(tmp, "rays.txt")
 
     def one(repeats):
-        with open(path, "w") as f:
-            for r in rays:
-                f.write(("%g %g %g %g %g %g\n" % r) * repeats)
-        return Timer([rad["rtrace"], "-h", "-u+"] + options + [octree], path, env=rad["env"])
+        return Timer([rad["rtrace"], "-h", "-u+"] + options + [octree], write_rays(tmp, rays, repeats), env=rad["env"])
     t = one(REFERENCE_REPEATS)
     reference = luminances(t.out, REFERENCE_REPEATS)
     ladder = []
@@ -158,19 +164,7 @@ def radiance_ladder(rad, tmp, case):
         run_r = one(r)
         ladder.append((run_r.cpu, normalised_rms(luminances(run_r.out, r), reference)))
         print(f"  {name}, Radiance x{r}: {run_r.cpu:.2f} s, {100 * ladder[-1][1]:.2f} %", file=sys.stderr)
-    return ladder, t.cpu, (t.cpu, luminances(t.out, REFERENCE_REPEATS, spread=True))
-
-
-def brume_spread(bin_dir, tmp, case, repeats):
-    """(cpu, spread) of Brume's rtrace on the case (see luminances)."""
-    _, files, options, rays, raypath, _ = case
-    path = os.path.join(tmp, "rays.txt")
-    with open(path, "w") as f:
-        for r in rays:
-            f.write(("%g %g %g %g %g %g\n" % r) * repeats)
-    t = Timer([os.path.join(bin_dir, "rtrace"), "-h", "-n", "1"] + options + files, path,
-              env=dict(os.environ, RAYPATH=raypath))
-    return t.cpu, luminances(t.out, repeats, spread=True)
+    return ladder, t.cpu, luminances(t.out, REFERENCE_REPEATS, spread=True)
 
 
 def normalised_rms(values, reference):
@@ -226,7 +220,10 @@ def main():
     rows, series, notes, sweep = [], {}, [], []
     with tempfile.TemporaryDirectory() as tmp:
         for case in scenes(tmp):
-            reference, ref_cpu = run(args.bin, tmp, case, REFERENCE_REPEATS, 8)
+            ref = trace(args.bin, tmp, case, REFERENCE_REPEATS, 8)
+            reference, ref_cpu = luminances(ref.out, REFERENCE_REPEATS), ref.cpu
+            if case[0] == "halo":  # the one compared with Radiance, by its spread too
+                halo, halo_reference = case, ref
             curves = {}
             compared = (8, 0) if case[5] else (8,)
             for cells in compared:
@@ -259,13 +256,12 @@ def main():
                          f"{full[0] * full[1] ** 2 / (skip[0] * skip[1] ** 2):.2f}x its time at equal error (time × error²).")
         rad, versus = find_radiance(), "Radiance not found (RADIANCE_BIN or /tmp/radiance/bin): no comparison."
         if rad:
-            halo = next(c for c in scenes(tmp) if c[0] == "halo")
-            ladder, ref_cpu, (r_cpu2, r_spread) = radiance_ladder(rad, tmp, halo)
-            b_cpu2, b_spread = brume_spread(args.bin, tmp, halo, REFERENCE_REPEATS)
+            ladder, r_cpu2, r_spread = radiance_ladder(rad, tmp, halo)
+            b_cpu2, b_spread = halo_reference.cpu, luminances(halo_reference.out, REFERENCE_REPEATS, spread=True)
             series["halo, Radiance"] = ladder
             rows += [f"| halo | Radiance | {r} | {cpu:.2f} s | {100 * err:.2f} % |" for r, (cpu, err) in zip(LADDER, ladder)]
             (b_cpu, b_err), (r_cpu, r_err) = series["halo, -mc 8"][-1], ladder[-1]
-            versus = (f"Radiance's rtrace on the halo (the same options, against its own reference of {ref_cpu:.1f} CPU s: "
+            versus = (f"Radiance's rtrace on the halo (the same options, against its own reference of {r_cpu2:.1f} CPU s: "
                       f"it dims the lamp's light by absorption only): at {LADDER[-1]} repeats {r_cpu:.2f} s, "
                       f"{100 * r_err:.2f} %; Brume {b_cpu:.2f} s, {100 * b_err:.2f} % (the times mostly start-up: Brume "
                       f"builds its scene from the .rad file, Radiance reads an octree made beforehand). Over "
