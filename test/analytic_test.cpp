@@ -4,30 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "closed_forms.h"
 #include "scene_text.h"
 
 using namespace brume;
 using namespace brume::test;
 using std::numbers::pi;
-
-namespace {
-
-// A sphere source seen whole above the sensor's horizon gives E = π L (r/d)² cos β, exactly.
-double sphereIrradiance(double L, double r, const dvec3& center, const dvec3& p, const dvec3& n) {
-    dvec3 toC = center - p;
-    double d = glm::length(toC);
-    return pi * L * (r / d) * (r / d) * glm::dot(glm::normalize(n), toC / d);
-}
-
-// Configuration factor from a point to a parallel rectangle w × l at height h, the point under a corner
-// (e.g. Howell's catalogue, C-11).
-double cornerFormFactor(double w, double l, double h) {
-    double a = w / h, b = l / h;
-    double sa = std::sqrt(1 + a * a), sb = std::sqrt(1 + b * b);
-    return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * pi);
-}
-
-}  // namespace
 
 // Tolerance 0.5%: cos θ varies by up to ±3% across the sphere's cone for tilted sensors; 4 × 64 stratified
 // samples average that to well below 0.1%.

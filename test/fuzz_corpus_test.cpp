@@ -67,7 +67,7 @@ void traceThrough(const Mesh& mesh) {
         layout.placements.push_back(Placement{0, t, t.inverse(), -1, -1, t});
     SceneGeometry geometry(std::move(layout));
     for (const dvec3& d : {dvec3(0, 0, -1), dvec3(0.3, 0.1, -1), dvec3(-1, 0.2, 0.1)}) {
-        Ray ray{geometry.boundsMax() + dvec3(0.5), glm::normalize(d)};
+        Ray ray{geometry.extent().hi + dvec3(0.5), glm::normalize(d)};
         for (int bounce = 0; bounce < 4; ++bounce) {
             auto hit = geometry.intersect(ray);
             if (!hit) break;

@@ -79,7 +79,8 @@ void IrradianceCache::forEachHolding(const dvec3& p, F&& f) const {
     if (index_->scene && indexed_ > 0) {
         Found found{&f, [](void* g, size_t i) { (*static_cast<std::remove_reference_t<F>*>(g))(i); }};
         RTCPointQuery query;
-        query.x = float(p.x), query.y = float(p.y), query.z = float(p.z);
+        dvec3 q = p - shape_.origin;
+        query.x = float(q.x), query.y = float(q.y), query.z = float(q.z);
         query.time = 0, query.radius = 0;
         RTCPointQueryContext context;
         rtcInitPointQueryContext(&context);
@@ -153,9 +154,10 @@ std::vector<RecordRequest> IrradianceCache::accept(const std::vector<RecordReque
         int axis = 0;
         for (int k = 1; k < 3; ++k)
             if (std::abs(q.normal[k]) > std::abs(q.normal[axis])) axis = k;
+        dvec3 p = q.point - shape_.origin;
         std::array<long long, 6> key{q.level, axis * 2 + (q.normal[axis] < 0), std::llround(std::log2(size)),
-                                     (long long)std::floor(q.point.x / size), (long long)std::floor(q.point.y / size),
-                                     (long long)std::floor(q.point.z / size)};
+                                     (long long)std::floor(p.x / size), (long long)std::floor(p.y / size),
+                                     (long long)std::floor(p.z / size)};
         Region& region = regions_[key];
         if (region.misses++ == 0) region.first = q, region.order = requestsSeen_;
         ++requestsSeen_;
@@ -193,13 +195,15 @@ void IrradianceCache::insert(std::vector<IrradianceRecord> records) {
     rtcSetGeometryBoundsFunction(
         geometry,
         [](const RTCBoundsFunctionArguments* args) {
-            const IrradianceRecord& r = static_cast<const IrradianceCache*>(args->geometryUserPtr)->records_[args->primID];
+            const auto& cache = *static_cast<const IrradianceCache*>(args->geometryUserPtr);
+            const IrradianceRecord& r = cache.records_[args->primID];
             // The zone is within the ellipsoid of semi-axes r0 (k1 and the normal) and r1 (k2): its box.
             dvec3 k1 = r.axis * double(r.radius[0]), k2 = r.axis2() * double(r.radius[1]), n = r.normal * double(r.radius[0]);
-            dvec3 reach = glm::sqrt(k1 * k1 + k2 * k2 + n * n) * 1.001 + 1e-6 * glm::length(r.point);
-            args->bounds_o->lower_x = float(r.point.x - reach.x), args->bounds_o->upper_x = float(r.point.x + reach.x);
-            args->bounds_o->lower_y = float(r.point.y - reach.y), args->bounds_o->upper_y = float(r.point.y + reach.y);
-            args->bounds_o->lower_z = float(r.point.z - reach.z), args->bounds_o->upper_z = float(r.point.z + reach.z);
+            dvec3 p = r.point - cache.shape_.origin;
+            dvec3 reach = glm::sqrt(k1 * k1 + k2 * k2 + n * n) * 1.001 + 1e-6 * glm::length(p);
+            args->bounds_o->lower_x = float(p.x - reach.x), args->bounds_o->upper_x = float(p.x + reach.x);
+            args->bounds_o->lower_y = float(p.y - reach.y), args->bounds_o->upper_y = float(p.y + reach.y);
+            args->bounds_o->lower_z = float(p.z - reach.z), args->bounds_o->upper_z = float(p.z + reach.z);
         },
         nullptr);
     rtcCommitGeometry(geometry);

@@ -148,3 +148,65 @@ TEST(Placement, RaysBouncingInsideAPlacedMeshNeverMeetTheirStart) {
         }
     }
 }
+
+namespace {
+
+// A tilted terrain z = 0.05 x + 0.03 y as a mesh of cells × cells squares of `cell` metres (two triangles
+// each) about its centre.
+Mesh terrain(int cells, double cell) {
+    Mesh m;
+    double half = 0.5 * cells * cell;
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            double x = i * cell - half, y = j * cell - half;
+            m.vertices.push_back(dvec3(x, y, 0.05 * x + 0.03 * y));
+        }
+    auto at = [&](int i, int j) { return uint32_t(j * (cells + 1) + i); };
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    m.materials.assign(m.triangles.size(), 0);
+    return m;
+}
+
+}  // namespace
+
+// A terrain mesh placed at a site's UTM coordinates under a model, as a 20 km grid of 200 m cells and as two
+// triangles 4000 km wide (exact shapes then, being huge beside the model): from points 1 mm and 0.1 mm above
+// it, and right on it, rays down meet it at exactly that height; rays up leave it. Also 5 km from the model.
+TEST(Placement, TerrainMeshesAtSiteCoordinatesAreMetExactly) {
+    Scene scene;
+    std::vector<Surface> model = boxSurfaces(scene);
+    const dvec3 site(512345.6, 5412345.7, 120);
+    for (const Mesh& mesh : {terrain(100, 200), terrain(1, 4e6)}) {
+        SceneLayout layout;
+        layout.surfaces = model;
+        for (Surface& s : layout.surfaces) s.shape = transformed(s.shape, parseTransform(std::vector<std::string>{
+                                                                            "-t", "512345.6", "5412345.7", "125"}).transform);
+        layout.ownSurfaces = int(layout.surfaces.size());
+        layout.prototypes.push_back(Prototype{layout.ownSurfaces, layout.ownSurfaces, &mesh});
+        Transform t = parseTransform(std::vector<std::string>{"-t", "512345.6", "5412345.7", "120"}).transform;
+        layout.placements.push_back(Placement{0, t, t.inverse(), 0, 0, t});
+        SceneGeometry g(std::move(layout));
+        for (dvec3 p : {dvec3(0.3, 0.2, 0), dvec3(5000, -3000, 0), dvec3(-17.1, 41.3, 0)}) {
+            p.z = 0.05 * p.x + 0.03 * p.y;
+            for (double h : {1e-3, 1e-4, 0.0}) {
+                Ray down{site + p + dvec3(0, 0, h), dvec3(0, 0, -1)};
+                down.tmin = 0;
+                auto hit = g.intersect(down);
+                if (h == 0) {  // right on it: it, or nothing, is met at once
+                    EXPECT_TRUE(!hit || hit->t < 1e-9) << p.x;
+                    continue;
+                }
+                ASSERT_TRUE(hit) << p.x << " " << h;
+                EXPECT_NEAR(hit->t, h, 1e-9) << p.x << " " << h;
+                EXPECT_EQ(hit->surface.instance, 0);
+                Ray up{hit->point, glm::normalize(dvec3(0.2, -0.1, 1)), kInf, hit->surface};
+                auto again = g.intersect(up);
+                EXPECT_TRUE(!again || again->surface.instance < 0) << p.x << " " << h;
+            }
+        }
+    }
+}

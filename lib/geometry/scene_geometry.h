@@ -1,8 +1,9 @@
-// The scene's surfaces in Embree: polygons and mesh triangles as triangles, spheres, cones and rings as exact
-// user geometry; each prototype (an instanced octree's surfaces, a mesh) in an Embree scene of its own, built
-// once and placed by Embree instances. Embree finds the nearest candidate; the hit point and normal are then
-// computed in double precision from the exact shape (in its prototype's coordinates for placed surfaces), so
-// shading never sees float rounding.
+// The scene's surfaces in Embree: polygons and mesh triangles as float triangles, spheres, cones and rings (and
+// polygons too large or too far for floats: local_frame.h) as exact user geometry; each prototype (an
+// instanced octree's surfaces, a mesh) in an Embree scene of its own, built once and placed by Embree
+// instances, its float coordinates offsets from a local origin. Embree's float BVH only proposes candidates:
+// each is decided in double precision from the exact shape (in its prototype's coordinates for placed
+// surfaces), and the nearest by exact distance wins, so neither hits nor shading see float rounding.
 #pragma once
 #include <embree3/rtcore.h>
 
@@ -10,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/bounds.h"
 #include "geometry/ray.h"
 #include "geometry/scene_layout.h"
 #include "geometry/surface.h"
@@ -75,29 +77,55 @@ public:
     const Mesh* meshOf(const SurfaceId& id) const {
         return id.triangle < 0 ? nullptr : layout_.prototypes[layout_.placements[id.instance].prototype].mesh;
     }
-    // Bounding box of all surfaces in the world (empty box, min > max, when there are none).
-    dvec3 boundsMin() const { return lo_; }
-    dvec3 boundsMax() const { return hi_; }
+    // The box of what sets the scene's scale: all surfaces and placed copies but those far larger than the
+    // typical one (a ground 2000 km wide) or far from the rest (a ball 1e12 m away); all of them where
+    // every one is such (empty box when there are none).
+    const Bounds3& extent() const { return extent_; }
+    // Where the world's float coordinates are offsets from: a point among the scene's surfaces, so that
+    // lengths measured from it (rather than from (0, 0, 0)) are the same wherever the model stands.
+    dvec3 origin() const;
 
 private:
     struct Group;
-    void buildGroup(Group& group, int prototype);
+    struct ShadowQuery;
+    struct TraceContext;
+    // A flat primitive in its prototype's coordinates: a polygon's triangle or a mesh triangle, and the
+    // plane its hits lie on.
+    struct FlatPiece {
+        const dvec3* corner[3];
+        dvec3 normal;
+        const dvec3* onPlane;
+    };
+    std::vector<Bounds3> pieceBoxes(Group& group, int prototype) const;
+    void buildGroup(Group& group, const std::vector<Bounds3>& pieces);
+    static bool floatPiece(const Group& group, const Bounds3& box);
+    bool floatPolygon(const Group& group, int surface) const;
     void addPolygons(Group& group);
-    void addMeshTriangles(Group& group);
-    void addExactShapes(Group& group);
-    void addPlacements();
-    void placedBounds(const Placement& placement, dvec3& lo, dvec3& hi) const;
-    bool traceable(const Placement& placement) const;
-    void computeBounds();
+    void addMeshTriangles(Group& group, const std::vector<Bounds3>& triangleBoxes);
+    void addExactShapes(Group& group, const std::vector<Bounds3>& triangleBoxes);
+    void addPlacements(const std::vector<Bounds3>& items);
+    Bounds3 placedBounds(const Placement& placement) const;
+    static bool traceable(const Bounds3& box);
     bool hidden(const SurfaceId& id) const;
-    void plane(const SurfaceId& id, dvec3& normal, dvec3& point) const;
-    bool meetsFlat(const SurfaceId& id, const Ray& ray) const;
+    const Group& groupOf(const SurfaceId& id) const;
+    FlatPiece flatPiece(const SurfaceId& id, int triangle) const;
+    std::optional<double> flatHit(const SurfaceId& id, const FlatPiece& piece, const Ray& world,
+                                  std::optional<double> slack) const;
+    static bool within(const FlatPiece& piece, const dvec3& q, double slack);
+    std::optional<double> floatSlack(const SurfaceId& id, double t, const TraceContext& ctx) const;
     Ray localRay(const Ray& ray, int placement) const;
-    double exactPlaneHit(const SurfaceId& id, const Ray& local, float embreeT, dvec3& normal) const;
     void interpolateMesh(const SurfaceId& id, const Ray& local, SurfaceHit& hit) const;
-    std::optional<ShapeHit> exactHit(const SurfaceId& id, const Ray& world, float tfar) const;
-    bool meetsTriangle(const SurfaceId& id, const Ray& ray) const;
-    static SurfaceId candidate(const RTCFilterFunctionNArguments* args, unsigned i);
+    std::optional<ShapeHit> exactHit(const Group& group, unsigned prim, const SurfaceId& id, const Ray& world,
+                                     double tmax) const;
+    bool toEmbree(const Ray& ray, RTCRay& r, double& behind) const;
+    // A float triangle Embree proposes, as the exact test decides it: its distance, surface, plane normal.
+    struct Candidate {
+        double t;
+        SurfaceId id;
+        dvec3 normal;
+    };
+    static std::optional<Candidate> floatCandidate(const RTCFilterFunctionNArguments* args, unsigned i,
+                                                   const TraceContext& ctx);
     static void filterTriangle(const RTCFilterFunctionNArguments* args);
     static void filterShadowTriangle(const RTCFilterFunctionNArguments* args);
     static void exactBounds(const RTCBoundsFunctionArguments* args);
@@ -106,7 +134,9 @@ private:
 
     SceneLayout layout_;
     std::vector<Group> groups_;  // [0]: the scene's own surfaces and the placements; [1 + k]: prototype k
-    dvec3 lo_, hi_;
+    std::vector<double> placementShift_;  // per placement: |translation| of its float transform
+    std::vector<bool> placementNear_;     // per placement: near the world's origin (LocalFrame::near)
+    Bounds3 extent_;
     RTCDevice device_ = nullptr;
 };
 

@@ -5,11 +5,12 @@
 #include <glm/gtx/component_wise.hpp>
 #include <limits>
 
+#include "geometry/local_frame.h"
 #include "geometry/scene_geometry.h"
 
 namespace brume::scene_geometry_detail {
 
-// Embree geometry IDs: in every group's scene, its triangles and its exact shapes; in the world's, the
+// Embree geometry IDs: in every group's scene, its float triangles and its exact shapes; in the world's, the
 // placements after them (placement p is ID kFirstPlacementGeom + p).
 constexpr unsigned kTrianglesGeom = 0, kExactGeom = 1, kFirstPlacementGeom = 2;
 
@@ -18,27 +19,42 @@ inline int placementOf(unsigned instID) {
     return instID == RTC_INVALID_GEOMETRY_ID ? -1 : int(instID - kFirstPlacementGeom);
 }
 
-// The axis-aligned box of a shape.
-void shapeBounds(const Shape& shape, dvec3& lo, dvec3& hi);
+// The axis-aligned box of a shape, and of a mesh's triangle t.
+Bounds3 shapeBounds(const Shape& shape);
+Bounds3 triangleBounds(const Mesh& mesh, size_t t);
+
+// One primitive of a group: a surface and, for a polygon, the triangle of its triangulation (-1 for curved
+// shapes and rings); or (surface -1) a mesh's triangle.
+struct Piece {
+    int surface;
+    int triangle;
+};
 
 }  // namespace brume::scene_geometry_detail
 
 namespace brume {
 
-// One Embree scene: the scene's own surfaces, or one prototype's.
+// One Embree scene: the scene's own surfaces, or one prototype's. Embree holds its coordinates as float
+// offsets from frame.origin.
 struct SceneGeometry::Group {
     const SceneGeometry* owner = nullptr;
     RTCScene scene = nullptr;
     int firstSurface = 0, endSurface = 0;
-    const Mesh* mesh = nullptr;        // a mesh prototype: triangle primIDs are the mesh's triangles
-    std::vector<int> triangleSurface;  // polygon triangle primID → surface
-    std::vector<int> exactSurface;     // user-geometry primID → surface
-    dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+    const Mesh* mesh = nullptr;  // a mesh prototype: triangle primIDs are the mesh's triangles
+    LocalFrame frame;
+    // The largest |offset from the origin| of its float triangles: their rounding is kFloatError of it.
+    double floatReach = 0;
+    // Float triangle primID → polygon and its triangle, or mesh triangle (empty: a mesh's own, all float).
+    std::vector<scene_geometry_detail::Piece> triangles;
+    std::vector<scene_geometry_detail::Piece> exact;      // user-geometry primID → exact shape or polygon triangle
+    Bounds3 box;                                          // of all its surfaces, in its own coordinates
 
     SurfaceId idOf(unsigned geomID, unsigned primID, int placement) const {
-        if (geomID == scene_geometry_detail::kExactGeom) return {exactSurface[primID], placement, -1};
-        if (mesh) return {-1, placement, int(primID)};
-        return {triangleSurface[primID], placement, -1};
+        bool isExact = geomID == scene_geometry_detail::kExactGeom;
+        const scene_geometry_detail::Piece* piece = isExact ? &exact[primID] : triangles.empty() ? nullptr : &triangles[primID];
+        if (!piece) return {-1, placement, int(primID)};  // a mesh whose triangles all are float ones
+        if (piece->surface < 0) return {-1, placement, piece->triangle};
+        return {piece->surface, placement, -1};
     }
 };
 

@@ -23,18 +23,21 @@ Integrator::CacheVisit*& Integrator::currentVisit() {
     return visit;
 }
 
-// Radiance's radius bounds: the scene's size (its octree's cube, else its bounding box) over -ar, 64 times
-// that but at most a fifth of the scene.
+// Radiance's radius bounds: the scene's size (its octree's cube, else the box of its extent) over -ar, 64
+// times that but at most a fifth of the scene. Records are placed relative to the scene's origin.
 RecordShape recordShape(const RenderScene& scene, const RenderSettings& settings) {
     RecordShape shape;
     shape.kind = settings.cacheKind;
     shape.accuracy = settings.ambientAccuracy;
-    const SceneGeometry& g = scene.geometry();
-    dvec3 extent = g.boundsMin().x <= g.boundsMax().x ? g.boundsMax() - g.boundsMin() : dvec3(1);
-    double size = scene.scene().cube ? scene.scene().cube->size : std::max({extent.x, extent.y, extent.z, 1e-6});
+    const Bounds3& box = scene.geometry().extent();
+    dvec3 extent = box.empty() ? dvec3(1) : box.hi - box.lo;
+    double size = std::max({extent.x, extent.y, extent.z, 1e-6});
+    // An octree's cube is Radiance's scale, unless far or huge objects (left out of the extent) made it.
+    if (scene.scene().cube && scene.scene().cube->size <= 2 * size) size = scene.scene().cube->size;
     double unit = settings.ambientResolution > 0 ? size / settings.ambientResolution : 0;
     shape.maxRadius = unit > 0 ? std::min(64 * unit, 0.2 * size) : 0.2 * size;
     shape.minRadius = unit > 0 ? unit : shape.maxRadius / 64;
+    shape.origin = scene.geometry().origin();
     return shape;
 }
 

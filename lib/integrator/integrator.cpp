@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <glm/gtx/component_wise.hpp>
 
 #include "integrator/path_state.h"
 #include "material/ward.h"
@@ -23,9 +24,8 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
     runSeed_ = settings.randomSampling
                    ? mixBits(static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()))
                    : settings.seed;
-    const SceneGeometry& g = scene.geometry();
-    double size = g.boundsMin().x <= g.boundsMax().x ? glm::length(g.boundsMax() - g.boundsMin()) : 1.0;
-    epsilon_ = 1e-7 * size;
+    const Bounds3& extent = scene.geometry().extent();
+    epsilon_ = 1e-7 * (extent.empty() ? 1.0 : glm::length(extent.hi - extent.lo));
     if (!cache_) cache_ = makeCache(scene, settings);
     const Spectrum& av = settings.ambientValue;
     if (av.size() == 3) settings_.ambientValue = spectrumFromRgb(av[0], av[1], av[2]);
@@ -42,9 +42,12 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
 Integrator::~Integrator() = default;
 
 // Rays given on input may start exactly on a surface (a sensor on the floor); like Radiance, which ignores
-// hits closer than 1e-6, ignore those, but relative to the scene's and the point's size.
+// hits closer than 1e-6, ignore those, but relative to the scene's size and the point's distance from the
+// scene's origin (sensor files round their coordinates), and beyond the double rounding of the point's
+// coordinates: the same at a site's coordinates as at (0, 0, 0).
 double Integrator::primaryTmin(const dvec3& org) const {
-    return epsilon_ + 4e-7 * std::max({std::abs(org.x), std::abs(org.y), std::abs(org.z)});
+    return epsilon_ + 4e-7 * glm::compMax(glm::abs(org - scene_.geometry().origin())) +
+           1e-14 * glm::compMax(glm::abs(org));
 }
 
 // With -aa > 0 a Radiance user expects its irradiance cache, which carries light of further bounces between
