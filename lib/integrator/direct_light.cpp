@@ -69,10 +69,13 @@ Spectrum Integrator::direct(const Shading& sh, const Lobes& lobes, const Surface
 }
 
 // Past a diffuse bounce, the points a path shades are averaged many at a time (a record's hemisphere, a
-// pixel's paths): there one source, chosen in proportion to a rough guess of its light, stands for all of
-// them, so a point costs one source's shadow rays however many sources there are. Only where no lobe is
-// also sampled by rays (their weights against sources assume every source sampled). Nullopt: fewer than
-// two sources to choose from.
+// pixel's paths): there one source stands for all of them, so a point costs one source's shadow rays however
+// many sources there are. It is chosen half in proportion to a rough guess of its light, half uniformly: the
+// guess knows nothing of what is in the way, and where it is wrong (the sun, 200 times brighter than a
+// window it shines through, guessed at a wall it cannot reach) a source chosen by it alone would come
+// rarely and with a huge weight; so no source's weight exceeds twice the number of sources. Only where no
+// lobe is also sampled by rays (their weights against sources assume every source sampled). Nullopt: fewer
+// than two sources to choose from.
 std::optional<Spectrum> Integrator::oneSourceOf(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
                                                 const PathState& state, Context& ctx) const {
     const std::vector<Light>& lights = scene_.lights();
@@ -85,17 +88,18 @@ std::optional<Spectrum> Integrator::oneSourceOf(const Shading& sh, const Lobes& 
         if (!samplesSource(light, surface)) continue;
         guess[i] = light.roughSolidAngle(sh.point) * std::max(1e-30f, brightness(light.emitter().radiance));
         total += guess[i];
-        ++candidates;
+        candidates += guess[i] > 0;
     }
     if (candidates < 2 || !(total > 0)) return std::nullopt;
-    double u = ctx.rng.uniform() * total;
+    auto probability = [&](size_t i) { return 0.5 * guess[i] / total + 0.5 / candidates; };
+    double u = ctx.rng.uniform();
     size_t chosen = 0;
     for (size_t i = 0; i < lights.size(); ++i) {
         if (guess[i] <= 0) continue;
         chosen = i;
-        if ((u -= guess[i]) < 0) break;
+        if ((u -= probability(i)) < 0) break;
     }
-    Spectrum value = directFrom(lights[chosen], -1, 1.0, sh, lobes, surface, state, ctx) * float(total / guess[chosen]);
+    Spectrum value = directFrom(lights[chosen], -1, 1.0, sh, lobes, surface, state, ctx) * float(1 / probability(chosen));
     if (mirrorImagesOn()) value += directViaMirrors(sh, lobes, surface, state, ctx);
     return value;
 }
@@ -326,7 +330,7 @@ Spectrum Integrator::transmittance(Ray ray, const SurfaceId& target, bool toInfi
         if (e && !sh.backside && (targetKind == Emitter::Kind::Illum || targetKind == Emitter::Kind::Glow))
             return Spectrum(0.f);
         // Otherwise a shadow ray crosses an illum as it would its alternate material.
-        const Material* m = e ? (e->alternate >= 0 ? scene_.material(e->alternate) : nullptr) : scene_.material(mat);
+        const Material* m = e ? alternateMaterial(ray, *hit, *e, sh, ctx) : scene_.material(mat);
         if (m) {
             dvec3 dir = ray.dir;
             t *= m->shadowTransmission(sh, dir);

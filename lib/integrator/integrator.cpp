@@ -310,6 +310,23 @@ int Integrator::shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Con
     return s.material;
 }
 
+// An illum's alternate material, as Radiance's m_light passes rays to it: shaded with that material's own
+// modifiers, never the illum's (its pattern is the distribution of the light the illum sends, not a colour
+// of the glass). `sh` is made anew for it. Null where the illum has none (void): the ray goes on.
+const Material* Integrator::alternateMaterial(const Ray& ray, const SurfaceHit& hit, const Emitter& illum, Shading& sh,
+                                              Context& ctx) const {
+    if (illum.alternate < 0) return nullptr;
+    sh = shadingAt(ray, hit, sh.flat, sh.object);
+    int material = illum.alternate;
+    if (scene_.modifiers().varies(illum.alternate)) {
+        Shader s = scene_.modifiers().resolve(illum.alternate, patternHit(ray, hit), patternEvaluator(),
+                                              ctx.rng.uniform());
+        applyTexturing(sh, s.texturing, ray, hit);
+        material = s.material;
+    }
+    return material >= 0 ? scene_.material(material) : nullptr;
+}
+
 // The hit as patterns see it: in an instance or mesh, in its frame, with the mesh's (u, v).
 PatternHit Integrator::patternHit(const Ray& ray, const SurfaceHit& hit) const {
     return PatternHit{hit.point, ray.dir, hit.normal, hit.t, hit.uv.x, hit.uv.y, scene_.objectFrame(hit.surface)};
@@ -388,10 +405,10 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
         if (sampled && !sh.backside && li >= 0)
             return sampledSourceShare(e.emitted(-ray.dir) * sh.pattern, li, state, ray, &hit, misEmission);
         // Otherwise an illum is its alternate material, or nothing at all.
-        if (e.alternate < 0) return passThrough(ray, hit, state, ctx, record, misEmission);
-        const Material* alt = scene_.material(e.alternate);
+        Shading own = sh;
+        const Material* alt = alternateMaterial(ray, hit, e, own, ctx);
         if (!alt) return passThrough(ray, hit, state, ctx, record, misEmission);
-        return scatterHit(ray, hit, sh, *alt, state, ctx, record, misEmission);
+        return scatterHit(ray, hit, own, *alt, state, ctx, record, misEmission);
     }
     if (sh.backside) {  // emitters radiate from their front only
         if (settings_.materials.backVisible) return Spectrum(0.f);

@@ -154,6 +154,8 @@ private:
     Spectrum sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,
                            double distance) const;
     int shaderAt(const Ray& ray, const SurfaceHit& hit, Shading& sh, Context& ctx) const;
+    const Material* alternateMaterial(const Ray& ray, const SurfaceHit& hit, const Emitter& illum, Shading& sh,
+                                      Context& ctx) const;
     PatternEvaluator& patternEvaluator() const;
     PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) const;
     void recordShadowRay(Context& ctx, const dvec3& from, const LightSample& s, const Light& light,
