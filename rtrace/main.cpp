@@ -53,7 +53,6 @@ OptionTable makeTable(Options& o) {
     addColorOutputOptions(t, o.color, true);
     t.addAttached("-ap", "photon maps (not supported)",
                   [](const std::string&) { throw Error("photon maps (-ap) are not supported by Brume"); });
-    t.addUnsupported("-am", 1, "photon search radius");
     for (const char* name : {"-ti", "-te", "-tI", "-tE"}) t.addUnsupported(name, 1, "trace include/exclude");
     t.addUnsupported("-P", 1, "persistent mode");
     t.addUnsupported("-PP", 1, "persistent mode");

@@ -314,7 +314,9 @@ TEST(SiteCoordinates, ScenesAtTheirSiteGiveTheOriginsValues) {
             double sumOrigin = 0, sumSite = 0;
             for (size_t i = 0; i < site.size(); ++i) {
                 bool same = std::abs(site[i] - origin[i]) <= 1e-6 * origin[i] + 1e-9;
-                if (bounces == 0) EXPECT_TRUE(same) << c.file << " " << i << ": " << site[i] << " " << origin[i];
+                if (bounces == 0) {
+                    EXPECT_TRUE(same) << c.file << " " << i << ": " << site[i] << " " << origin[i];
+                }
                 apart += !same;
                 sumOrigin += origin[i], sumSite += site[i];
             }

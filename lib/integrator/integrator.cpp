@@ -50,11 +50,13 @@ double Integrator::primaryTmin(const dvec3& org) const {
            1e-14 * glm::compMax(glm::abs(org));
 }
 
-// With -aa > 0 a Radiance user expects its irradiance cache, which carries light of further bounces between
-// its -ab levels and lands near the all-bounce answer. Until Brume's cache exists, paths past the -ab-th
-// bounce go on by Russian roulette instead (unless -av gives a value for them): unbiased, one path each.
+// With -aa > 0 (the irradiance cache) a Radiance user's typical call, -ab of a few bounces, means the light
+// of every bounce: paths past the -ab-th go on by Russian roulette, unbiased, one path each (a decided
+// difference: Radiance's cache stops there). -av gives them a value instead, and -al+ stops them as Radiance
+// does, so that a study can be checked against Radiance's numbers.
 bool Integrator::bounceTail() const {
-    return settings_.ambientAccuracy > 0 && settings_.ambientBounces > 0 && settings_.ambientValue.isBlack();
+    return settings_.ambientAccuracy > 0 && settings_.ambientBounces > 0 && settings_.ambientValue.isBlack() &&
+           !settings_.ambientLimit;
 }
 
 uint64_t Integrator::seedFor(uint64_t index) const { return mixBits(runSeed_ ^ mixBits(index + 0x9e3779b97f4a7c15ULL)); }

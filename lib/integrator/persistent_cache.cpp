@@ -1,7 +1,5 @@
 #include "integrator/persistent_cache.h"
 
-#include <sstream>
-
 #include "integrator/render_options.h"
 #include "scene/scene_hash.h"
 #include "util/error.h"
@@ -13,14 +11,10 @@ std::string cacheOptions(const RenderSettings& settings) {
     bool irradianceAtHit = false;
     OptionTable table;
     addRenderOptions(table, copy, irradianceAtHit);
-    std::istringstream lines(table.defaults());
-    std::string line, text = "brume-" BRUME_VERSION;
-    while (std::getline(lines, line)) {
-        std::string option = line.substr(0, line.find('#'));
-        while (!option.empty() && std::isspace(static_cast<unsigned char>(option.back()))) option.pop_back();
+    std::string text = "brume-" BRUME_VERSION;
+    for (const std::string& option : table.valueOptions()) {
         // Which surface a value is asked for (-i) and how samples are seeded (-u) change no record.
-        if (option.empty() || option.rfind("-i", 0) == 0 || option.rfind("-u", 0) == 0 || option.rfind("-af", 0) == 0)
-            continue;
+        if (option.rfind("-i", 0) == 0 || option.rfind("-u", 0) == 0 || option.rfind("-af", 0) == 0) continue;
         text += " " + option;
     }
     return text;

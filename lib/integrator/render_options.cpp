@@ -27,7 +27,7 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     t.addBool("-i", irradianceAtHit, "irradiance at the first opaque surface hit");
     addRealOption(t, "-dt", s.directThreshold, "direct threshold (fewer shadow rays to weaker sources)");
     addRealOption(t, "-dc", s.directCertainty, "direct certainty");
-    addRealOption(t, "-dj", s.sourceJitter, "direct jitter (sources are always sampled stratified)");
+    addRealOption(t, "-dj", s.sourceJitter, "direct jitter (sources are sampled stratified)");
     addRealOption(t, "-ds", s.sourceSubdivision, "direct sampling: source size/distance ratio per shadow ray");
     addIntOption(t, "-dr", s.directRelays, "direct relays: sources seen in flat mirrors (one relay)");
     addIntOption(t, "-dp", s.directPresamples, "direct pretest density");
@@ -36,11 +36,15 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addRealOption(t, "-st", s.materials.specularThreshold, "specular threshold: sampled rays above it");
     addColor(t, "-av", s.ambientValue, "ambient value beyond the last bounce");
     addIntOption(t, "-aw", s.ambientWeight, "ambient value weight");
-    addIntOption(t, "-ab", s.ambientBounces, "ambient bounces (diffuse interreflections, exactly)");
+    addIntOption(t, "-ab", s.ambientBounces,
+                 "ambient bounces (diffuse interreflections; with the cache, -aa > 0, past them by Russian roulette "
+                 "unless -al+ or -av is given)");
+    t.addBool("-al", s.ambientLimit, "ambient limit: with the cache too, no light past -ab bounces (Radiance's)");
     addRealOption(t, "-aa", s.ambientAccuracy, "ambient accuracy: the irradiance cache's relative error (0: path tracing)");
     addIntOption(t, "-ar", s.ambientResolution, "ambient resolution");
     addIntOption(t, "-ad", s.ambientDivisions, "ambient divisions: paths at the first bounce");
     addIntOption(t, "-as", s.ambientSupersamples, "ambient super-samples");
+    addRealOption(t, "-am", s.photonSearchRadius, "photon search radius");
     t.add("-acache", 1, "irradiance cache records: adaptive (Brume's) or classic (Ward-Heckbert's)",
           [&s](const auto& a) {
               if (a[0] == "adaptive") s.cacheKind = RecordShape::Kind::Adaptive;
@@ -64,9 +68,11 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
           [&s](const auto& a) { s.sampling.shortest = toReal("-cw", a[0]), s.sampling.longest = toReal("-cw", a[1]); },
           [&s] { return formatReal(s.sampling.shortest) + " " + formatReal(s.sampling.longest); });
     t.add("-T", 1, "scene time (s) for time-varying content", [&s](const auto& a) { s.time = toReal("-T", a[0]); },
-          [&s] { return s.time ? formatReal(*s.time) : std::string("0 (none)"); });
+          [&s] { return s.time ? formatReal(*s.time) : std::string(); });
     addIntOption(t, "-lr", s.maxReflections, "limit reflections (< 0: Russian roulette past |lr|)");
     addRealOption(t, "-lw", s.minWeight, "limit weight (Russian roulette below it)");
+    // Radiance's options that Brume has no use for, accepted so that its command lines run unchanged.
+    t.changeNothing({"-dc", "-dj", "-dp", "-ss", "-aw", "-as", "-am"});
 }
 
 void addColorOutputOptions(OptionTable& t, ColorOutput& o, bool values) {

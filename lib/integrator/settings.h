@@ -13,14 +13,16 @@
 namespace brume {
 
 struct RenderSettings {
-    int ambientBounces = 0;          // -ab: diffuse interreflections, exactly
+    int ambientBounces = 0;          // -ab: diffuse interreflections (past them: Integrator::bounceTail)
+    bool ambientLimit = false;       // -al+: with the cache too, nothing past -ab bounces (Radiance's numbers)
     int ambientDivisions = 1024;     // -ad: paths per shading point at the first bounce
-    int ambientSupersamples = 512;   // -as: extra samples where a record's hemisphere varies most
+    int ambientSupersamples = 512;   // -as: Radiance's extra samples (Brume's records adapt otherwise: no effect)
     double ambientAccuracy = 0.1;    // -aa: the irradiance cache's relative error (0: no cache, path tracing)
     int ambientResolution = 256;     // -ar: the scene's size over the smallest record radius
     RecordShape::Kind cacheKind = RecordShape::Kind::Adaptive;  // -acache adaptive|classic
     std::string cacheFile;           // -af: where the cache's records are kept between runs (changes no value)
-    int ambientWeight = 0;           // -aw
+    int ambientWeight = 0;           // -aw (Radiance's weight of -av in its records: no effect)
+    double photonSearchRadius = 0;   // -am (no photon maps: no effect)
     Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce (RGB as given; the
                                      // integrator lifts it to the sampling's bands)
     int maxReflections = -10;        // -lr: > 0 hard limit; ≤ 0 Russian roulette past |lr| reflections
@@ -28,11 +30,11 @@ struct RenderSettings {
     double sourceSubdivision = 0.2;  // -ds: more shadow rays for sources larger than this, seen from a point
     double sourceJitter = 0;         // -dj (sources are always sampled stratified; kept for compatibility)
     double directThreshold = 0.03;   // -dt: fewer shadow rays to sources with a smaller share of the light
-    double directCertainty = 0.75;   // -dc
-    int directRelays = 2;            // -dr (virtual sources through mirrors: not yet)
-    int directPresamples = 512;      // -dp
+    double directCertainty = 0.75;   // -dc (every shadow ray is traced: no effect)
+    int directRelays = 2;            // -dr: sources seen through flat mirrors
+    int directPresamples = 512;      // -dp (no presampling: no effect)
     bool directVisible = true;       // -dv: light sources seen by rays
-    double specularJitter = 1;       // -ss
+    double specularJitter = 1;       // -ss (lobes are always sampled: no effect)
     MaterialSettings materials;      // -st, -bv
     bool randomSampling = true;      // -u: a new seed each run; -u- a fixed one
     uint64_t seed = 0;               // used when -u-

@@ -1,5 +1,6 @@
 #include "util/options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -99,14 +100,38 @@ std::string OptionTable::usage() const {
     return out.str();
 }
 
+void OptionTable::changeNothing(const std::vector<std::string>& names) {
+    for (Option& o : options_)
+        if (std::find(names.begin(), names.end(), o.name) != names.end() && o.changesValues) {
+            o.changesValues = false;
+            o.help += " (accepted; changes nothing in Brume)";
+        }
+}
+
+// "-ab 5", "-I+", "-faa"; empty for an option that is not set.
+std::string OptionTable::setting(const Option& o) const {
+    std::string value = o.current();
+    if (value.empty() && o.kind == Kind::Separate) return "";
+    return o.name + (o.kind == Kind::Separate ? " " : "") + value;
+}
+
 std::string OptionTable::defaults() const {
     std::ostringstream out;
     for (const Option& o : options_) {
         if (!o.current) continue;
-        std::string line = o.name + (o.kind == Kind::Separate ? " " : "") + o.current();
+        std::string line = setting(o);
+        if (line.empty()) line = "#" + o.name + " (not set)";
         out << line << std::string(line.size() < 32 ? 32 - line.size() : 1, ' ') << "# " << o.help << '\n';
     }
     return out.str();
+}
+
+std::vector<std::string> OptionTable::valueOptions() const {
+    std::vector<std::string> out;
+    for (const Option& o : options_)
+        if (o.current && o.changesValues)
+            if (std::string s = setting(o); !s.empty()) out.push_back(s);
+    return out;
 }
 
 int toInt(const std::string& option, const std::string& text) {

@@ -24,6 +24,9 @@ public:
     // An option of Radiance's that Brume does not have yet: listed in the usage, refused when given, so a
     // script that depends on it fails instead of silently computing something else.
     void addUnsupported(const std::string& name, int count, const std::string& help);
+    // Marks options as changing no computed value in Brume (Radiance's, kept so that its command lines run):
+    // their help says so, and they are no part of valueOptions().
+    void changeNothing(const std::vector<std::string>& names);
     // An option whose value is the rest of the word (-ovd, -faf); the value may be empty.
     void addAttached(const std::string& name, const std::string& help, std::function<void(const std::string&)> apply,
                      std::function<std::string()> current = {});
@@ -34,8 +37,11 @@ public:
 
     // "  -ab N    number of ambient bounces" lines, in declaration order.
     std::string usage() const;
-    // The current value of every option, in Radiance's -defaults layout ("-ab 0\t\t\t\t# ambient bounces").
+    // The current value of every option, in Radiance's -defaults layout ("-ab 0\t\t\t\t# ambient bounces"),
+    // which reads back as options (@file); an option not set (no current value) as a comment.
     std::string defaults() const;
+    // "-ab 5 -aa 0.100000 ...": the options that change computed values, as they are set.
+    std::vector<std::string> valueOptions() const;
 
 private:
     enum class Kind { Separate, Bool, Attached };
@@ -46,7 +52,9 @@ private:
         std::string help;
         std::function<void(const std::vector<std::string>&)> apply;
         std::function<std::string()> current;
+        bool changesValues = true;
     };
+    std::string setting(const Option& o) const;
     const Option* find(const std::string& word) const;
     std::vector<Option> options_;
 };
