@@ -37,6 +37,15 @@ inline Output runBrume(const std::string& lines, const std::filesystem::path& sc
                        scratch);
 }
 
+// A room lit by a sphere lamp: a floor, one wall and a ceiling of grey plastic.
+inline const char* const kLampRoom =
+    "void light lum 0 0 3 100 100 100\n"
+    "lum sphere bulb 0 0 4 0 0 2 0.1\n"
+    "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+    "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n"
+    "grey polygon wall 0 0 12 -5 -5 0 -5 5 0 -5 5 4 -5 -5 4\n"
+    "grey polygon ceiling 0 0 12 -5 -5 4 -5 5 4 5 5 4 5 -5 4\n";
+
 // The record count in mkcache's report "mkcache: file: N records (...)", or -1.
 inline long reportedRecords(const std::string& err) {
     size_t at = err.find(" records (");

@@ -16,13 +16,7 @@ namespace fs = std::filesystem;
 
 using brume_test::Output;
 
-const char* kRoom =
-    "void light lum 0 0 3 100 100 100\n"
-    "lum sphere bulb 0 0 4 0 0 2 0.1\n"
-    "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
-    "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n"
-    "grey polygon wall 0 0 12 -5 -5 0 -5 5 0 -5 5 4 -5 -5 4\n"
-    "grey polygon ceiling 0 0 12 -5 -5 4 -5 5 4 5 5 4 5 -5 4\n";
+using brume_test::kLampRoom;
 
 // Sensors facing up on the floor, in rows across the room.
 std::string floorGrid(int count) {
@@ -43,7 +37,7 @@ class MkcacheCli : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = brume_test::scratchDir("mkcache_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        std::ofstream(dir_ / "room.rad") << kRoom;
+        std::ofstream(dir_ / "room.rad") << kLampRoom;
         std::ofstream(dir_ / "grid.txt") << floorGrid(60);
     }
     void TearDown() override { fs::remove_all(dir_); }

@@ -17,19 +17,13 @@ namespace {
 namespace fs = std::filesystem;
 using brume_test::Output;
 
-const char* kRoom =
-    "void light lum 0 0 3 100 100 100\n"
-    "lum sphere bulb 0 0 4 0 0 2 0.1\n"
-    "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
-    "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n"
-    "grey polygon ceiling 0 0 12 -5 -5 4 -5 5 4 5 5 4 5 -5 4\n";
 const char* kSensors = "0 0 0 0 0 1\n1 2 0 0 0 1\n-3 1 0 0 0 1\n";
 
 class RtraceOptions : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = brume_test::scratchDir("options_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        std::ofstream(dir_ / "room.rad") << kRoom;
+        std::ofstream(dir_ / "room.rad") << brume_test::kLampRoom;
         std::ofstream(dir_ / "sensors.txt") << kSensors;
     }
     void TearDown() override { fs::remove_all(dir_); }
