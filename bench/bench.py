@@ -262,6 +262,51 @@ def throughput(brume, rad, tmp, repeat, threads):
     return rows
 
 
+UTM = (512345.6, 5412345.7, 120.0)  # a site's UTM coordinates (m), where BIM and GIS tools put models
+
+
+def moved_rays(src, dst, offset):
+    """The rays of src with their origins moved by offset, every digit kept."""
+    with open(src) as fin, open(dst, "w") as fout:
+        for line in fin:
+            w = line.split()
+            if len(w) == 6:
+                fout.write("%.10f %.10f %.10f %s %s %s\n" % (float(w[0]) + offset[0], float(w[1]) + offset[1],
+                                                           float(w[2]) + offset[2], w[3], w[4], w[5]))
+
+
+def site_coordinates(brume, tmp, repeat, ref):
+    """The office at a site's UTM coordinates against itself at the origin: the same rays moved, one thread,
+    in one run; and the sensors' error against the reference there."""
+    scene = os.path.join(tmp, "office_utm.rad")
+    with open(scene, "w") as f:
+        f.write("!xform -t %.17g %.17g %.17g %s\n" % (*UTM, SCENE))
+    env = dict(os.environ, PATH=os.path.dirname(brume) + os.pathsep + os.environ.get("PATH", ""))
+    views = os.path.join(tmp, "view100k.txt")
+    if not os.path.exists(views):
+        view_rays(views, 100000)
+    cases = [("view rays, -ab 0", views, ["-h", "-ab", "0"]),
+             ("sensor grid -I -ab 5 -aa 0 -ad 512", GRID, ["-h", "-I", "-ab", "5", "-aa", "0", "-ad", "512", "-lw", "1e-5"]),
+             ("sensor grid -I -ab 5 (cache defaults)", GRID, ["-h", "-I", "-ab", "5"])]
+    print("\n== Site coordinates: the office moved to UTM (%.1f, %.1f, %.1f) against itself at the origin, "
+          "-n 1 (best of %d) ==" % (*UTM, repeat))
+    hdr = "%-40s %10s %10s %8s %13s %13s" % ("test", "origin s", "UTM s", "UTM/orig", "RMS % origin", "RMS % UTM")
+    print(hdr)
+    print("-" * len(hdr))
+    for name, inp, opts in cases:
+        moved = os.path.join(tmp, "utm_" + os.path.basename(inp))
+        moved_rays(inp, moved, UTM)
+        t0 = best_of(repeat, [brume] + opts + ["-n", "1", SCENE], inp, env)
+        t1 = best_of(repeat, [brume] + opts + ["-n", "1", scene], moved, env)
+        errs = ["%13s" % "-", "%13s" % "-"]
+        if inp == GRID and ref:
+            errs = ["%13.2f" % errors(read_rgb(Timer([brume] + opts + ["-n", "1", s], i, env).out), ref)[0]
+                    for s, i in ((SCENE, GRID), (scene, moved))]
+        print("%-40s %10.2f %10.2f %7.3fx %s %s" % (name, t0[0], t1[0], t1[0] / t0[0], errs[0], errs[1]), flush=True)
+    print("UTM/orig: wall time at the site over the time at the origin; RMS: the sensors' illuminance against the "
+          "reference (at the site, the same sensors moved).")
+
+
 def ladders(brume, rad, ref):
     series = []  # (label, [(settings, wall, cpu, rms, max, mean)])
 
@@ -368,6 +413,7 @@ def main():
     ap.add_argument("--remake-reference", action="store_true", help="recompute bench/results/reference.txt")
     ap.add_argument("--skip-throughput", action="store_true")
     ap.add_argument("--skip-ladders", action="store_true")
+    ap.add_argument("--skip-site", action="store_true", help="leave out the office at UTM coordinates")
     a = ap.parse_args()
 
     start = time.perf_counter()
@@ -397,6 +443,8 @@ def main():
                                                              meta.get("command", "?").split(" -n ")[0], ref_noise,
                                                              100 * max(se), statistics.fmean(ref)))
             series = ladders(brume, rad, ref)
+            if not a.skip_site:
+                site_coordinates(brume, tmp, a.repeat, ref)
             os.makedirs(RESULTS, exist_ok=True)
             tsv = os.path.join(RESULTS, "time_vs_error.tsv")
             png = os.path.join(RESULTS, "time_vs_error.png")
