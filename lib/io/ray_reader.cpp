@@ -1,5 +1,6 @@
 #include "io/ray_reader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -52,6 +53,17 @@ bool RayReader::next(std::array<double, 6>& ray) {
     return true;
 }
 
+InputRay inputRay(const std::array<double, 6>& r) {
+    dvec3 org(r[0], r[1], r[2]), dir(r[3], r[4], r[5]);
+    // Scaled by its largest component first: the squares of components beyond 1e154 overflow, those of
+    // components below 1e-154 vanish.
+    double largest = std::max({std::abs(dir.x), std::abs(dir.y), std::abs(dir.z)});
+    if (largest == 0) return {org, dir, 0, true};
+    dvec3 scaled = dir / largest;
+    double length = glm::length(scaled);
+    return {org, scaled / length, largest * length, false};
+}
+
 bool RayBatches::next(std::vector<InputRay>& rays) {
     first_ = uint64_t(count_);
     rays.clear();
@@ -67,9 +79,7 @@ bool RayBatches::next(std::vector<InputRay>& rays) {
             break;
         }
         ++count_;
-        dvec3 org(r[0], r[1], r[2]), dir(r[3], r[4], r[5]);
-        double length = glm::length(dir);
-        rays.push_back({org, length > 0 ? dir / length : dir, length, !(length > 0)});
+        rays.push_back(inputRay(r));
         if (rays.back().zero) break;  // a flush request: finish what came before it
     }
     return !rays.empty();

@@ -32,6 +32,10 @@ struct InputRay {
     bool zero;
 };
 
+// `r` as rtrace traces it: a direction of any finite length, however small or large, is made unit; only
+// 0 0 0 is zero.
+InputRay inputRay(const std::array<double, 6>& r);
+
 constexpr size_t kRayBatchSize = 4096;  // rtrace's rays per batch when -x does not set it
 
 // rtrace's batches of rays: up to `size` rays, ending early after a flush request; at most `limit` rays in
