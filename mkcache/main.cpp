@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <iostream>
 
 #include "integrator/integrator.h"
@@ -66,23 +67,27 @@ struct Batch {
     std::vector<InputRay> rays;
 };
 
-// Every point on the standard input, in rtrace's batches; read first so that progress knows the total.
-std::vector<Batch> readPoints(char format, long& total) {
-    RayReader reader(std::cin, format);
+// Every point on the standard input, in rtrace's batches; read first so that progress knows the total. A
+// bad point ends them, its Error kept in `error`: the points before it are cached, as rtrace would answer them.
+std::vector<Batch> readPoints(char format, std::exception_ptr& error) {
+    RayReader reader(std::cin, format, "(stdin)");
     RayBatches batches(reader, kRayBatchSize, 0);
     std::vector<Batch> all;
-    for (std::vector<InputRay> rays; batches.next(rays);) all.push_back({batches.first(), rays});
-    if (reader.partial()) warn("partial ray at end of input ignored");
-    total = 0;
-    for (const Batch& b : all) total += long(b.rays.size());
+    try {
+        for (std::vector<InputRay> rays; batches.next(rays);) all.push_back({batches.first(), rays});
+    } catch (const Error&) {
+        error = std::current_exception();
+    }
     return all;
 }
 
 // Traces the points as rtrace would, discarding the values: each batch makes the records rtrace's would, and
 // they go to the file after it.
 void cachePoints(const Options& o, const Integrator& integrator, PersistentCache& file, ProgressMeter& progress) {
-    long total;
-    std::vector<Batch> batches = readPoints(o.inFormat, total);
+    std::exception_ptr error;
+    std::vector<Batch> batches = readPoints(o.inFormat, error);
+    long total = 0;
+    for (const Batch& b : batches) total += long(b.rays.size());
     progress.start(total);
     for (const Batch& b : batches) {
         integrator.forEach(b.rays.size(), [&](size_t i) {
@@ -96,6 +101,7 @@ void cachePoints(const Options& o, const Integrator& integrator, PersistentCache
         progress.advance(long(b.rays.size()), long(b.rays.size()));
     }
     progress.finish();
+    if (error) std::rethrow_exception(error);
 }
 
 // Renders the view's picture as rpict would, discarding it: the records it needs go to the file.

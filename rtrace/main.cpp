@@ -105,7 +105,7 @@ int run(int argc, char** argv) {
 
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
     tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
-    RayReader reader(std::cin, o.inFormat);
+    RayReader reader(std::cin, o.inFormat, "(stdin)");
     long limit = o.yres > 0 ? (o.xres > 1 ? long(o.xres) * o.yres : o.yres) : 0;
     long flushEvery = (o.yres == 0 || o.xres <= 1) ? o.xres : 0;
     RayBatches batches(reader, flushEvery > 0 ? size_t(flushEvery) : kRayBatchSize, limit);
@@ -142,7 +142,6 @@ int run(int argc, char** argv) {
         }
         if (flushEvery > 0) std::fflush(stdout);
     }
-    if (reader.partial()) warn("partial ray at end of input ignored");
     return 0;
 }
 

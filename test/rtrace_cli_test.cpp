@@ -330,6 +330,15 @@ TEST_F(RtraceCli, HostileNumbersGiveFiniteOutput) {
     }
 }
 
+// A direction is a direction however long or short: 1e200 (whose squared length overflows) and 1e-200 (whose
+// squared length vanishes) look where 1 does; only 0 0 0 is a flush request.
+TEST_F(RtraceCli, DirectionsOfAnyLengthLookTheSameWay) {
+    Output r = rtrace("-h- -odL s.rad", "0 0 1 1 0 -1\n0 0 1 1e200 0 -1e200\n0 0 1 1e-200 0 -1e-200\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string line = "7.071068e-01\t0.000000e+00\t-7.071068e-01\t1.414214e+00\t\n";
+    EXPECT_EQ(r.out, line + line + line);
+}
+
 // A scene file named on the command line is opened as given, whatever RAYPATH says (as oconv does).
 TEST_F(RtraceCli, SceneFilesOnTheCommandLineIgnoreRaypath) {
     setenv("RAYPATH", "/nonexistent", 1);

@@ -146,6 +146,16 @@ double IrradianceCache::regionSize(int level) const {
     return std::exp2(std::round(std::log2(2 * typical)));
 }
 
+namespace {
+// The region of coordinate x along one axis, for regions `size` wide. Coordinates so far out that the index
+// would not fit a long long (a sensor at 1e300) share the outermost region on their side: converting them
+// unclamped is undefined, and on x86 put both sides in one region.
+long long regionIndex(double x, double size) {
+    constexpr double kOutermost = 0x1p62;
+    return (long long)std::clamp(std::floor(x / size), -kOutermost, kOutermost);
+}
+}  // namespace
+
 std::vector<RecordRequest> IrradianceCache::accept(const std::vector<RecordRequest>& requests,
                                                    const std::function<int(const RecordRequest&)>& missesToPay) {
     std::vector<std::array<long long, 6>> ready;
@@ -156,8 +166,7 @@ std::vector<RecordRequest> IrradianceCache::accept(const std::vector<RecordReque
             if (std::abs(q.normal[k]) > std::abs(q.normal[axis])) axis = k;
         dvec3 p = q.point - shape_.origin;
         std::array<long long, 6> key{q.level, axis * 2 + (q.normal[axis] < 0), std::llround(std::log2(size)),
-                                     (long long)std::floor(p.x / size), (long long)std::floor(p.y / size),
-                                     (long long)std::floor(p.z / size)};
+                                     regionIndex(p.x, size), regionIndex(p.y, size), regionIndex(p.z, size)};
         Region& region = regions_[key];
         if (region.misses++ == 0) region.first = q, region.order = requestsSeen_;
         ++requestsSeen_;

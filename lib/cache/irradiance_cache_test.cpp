@@ -88,6 +88,18 @@ TEST(IrradianceCache, AcceptsOneRequestPerRegionOnceMissesPayForIt) {
     EXPECT_TRUE(cache.accept(requests, [](const RecordRequest&) { return 1; }).empty());
 }
 
+// Requests at sensors however far out (1e300, -1e300) are counted in regions of their own side: two far
+// apart never pay for each other's record; two at one far point do.
+TEST(IrradianceCache, FarRequestsKeepToTheirOwnRegions) {
+    IrradianceCache cache(shape());
+    auto two = [](const RecordRequest&) { return 2; };
+    RecordRequest east{dvec3(1e300, 0, 0), dvec3(0, 0, 1), {}, 1, 1, 1}, west{dvec3(-1e300, 0, 0), dvec3(0, 0, 1), {}, 1, 1, 2};
+    EXPECT_TRUE(cache.accept({east, west}, two).empty());
+    std::vector<RecordRequest> accepted = cache.accept({east}, two);
+    ASSERT_EQ(accepted.size(), 1u);
+    EXPECT_EQ(accepted[0].key, 1u);
+}
+
 // Two records of one bounce that disagree beyond twice the accuracy at each other's points shrink apart.
 TEST(IrradianceCache, DisagreeingRecordsShrinkSoNeitherSpeaksForTheOther) {
     IrradianceCache cache(shape());
