@@ -105,9 +105,9 @@ SceneGeometry::SceneGeometry(SceneLayout layout) : layout_(std::move(layout)) {
     for (size_t k = 0; k < layout_.prototypes.size(); ++k) {
         double worldTypical = groups_[0].frame.typicalSize() / std::max(largestScale[k], 1e-300);
         groups_[1 + k].frame = LocalFrame(pieces[1 + k], worldTypical);
-        buildGroup(groups_[1 + k], pieces[1 + k]);
+        buildGroup(groups_[1 + k]);
     }
-    buildGroup(groups_[0], pieces[0]);
+    buildGroup(groups_[0]);
     addPlacements(world);
     rtcCommitScene(groups_[0].scene);
     if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) throw Error("Embree failed to build the scene");
@@ -119,9 +119,11 @@ SceneGeometry::~SceneGeometry() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-// Prototype k's group, or with k = -1 the world's (its own surfaces), told what it holds; the boxes of its
-// pieces (surfaces, or a mesh's triangles), and its box.
+// Prototype k's group, or with k = -1 the world's (its own surfaces), told what it holds and its box; returns
+// the boxes its frame is found from: its surfaces', or a mesh's triangles', at most kFrameSample of them
+// taken evenly (the medians of a million triangles need no more, nor a million boxes in memory).
 std::vector<Bounds3> SceneGeometry::pieceBoxes(Group& g, int k) const {
+    constexpr size_t kFrameSample = size_t(1) << 16;
     g.owner = this;
     g.endSurface = layout_.ownSurfaces;
     if (k >= 0) {
@@ -130,20 +132,22 @@ std::vector<Bounds3> SceneGeometry::pieceBoxes(Group& g, int k) const {
     }
     std::vector<Bounds3> boxes;
     for (int s = g.firstSurface; s < g.endSurface; ++s) boxes.push_back(shapeBounds(layout_.surfaces[s].shape));
-    if (g.mesh)
-        for (size_t t = 0; t < g.mesh->triangles.size(); ++t) boxes.push_back(triangleBounds(*g.mesh, t));
     for (const Bounds3& b : boxes) g.box.include(b);
+    if (!g.mesh) return boxes;
+    for (const dvec3& v : g.mesh->vertices) g.box.include(v);
+    size_t count = g.mesh->triangles.size(), stride = std::max<size_t>(1, count / kFrameSample);
+    for (size_t t = 0; t < count; t += stride) boxes.push_back(triangleBounds(*g.mesh, t));
     return boxes;
 }
 
 // A group's Embree scene, its frame set; the world's is committed once its placements are added.
-void SceneGeometry::buildGroup(Group& g, const std::vector<Bounds3>& pieces) {
+void SceneGeometry::buildGroup(Group& g) {
     g.scene = newScene(device_, g.mesh != nullptr);
     if (g.mesh)
-        addMeshTriangles(g, pieces);
+        addMeshTriangles(g);
     else
         addPolygons(g);
-    addExactShapes(g, pieces);
+    addExactShapes(g);
     if (&g != &groups_[0]) rtcCommitScene(g.scene);
 }
 
@@ -179,35 +183,39 @@ void SceneGeometry::addPolygons(Group& g) {
 }
 
 // The mesh's own index buffer is shared with Embree (one copy of the triangles, however many placements)
-// unless some of its triangles are exact shapes; then float triangle primIDs map to the mesh's.
-void SceneGeometry::addMeshTriangles(Group& g, const std::vector<Bounds3>& boxes) {
+// unless some of its triangles are exact shapes; then the float ones get an index buffer of their own, and
+// their primIDs map to the mesh's.
+void SceneGeometry::addMeshTriangles(Group& g) {
     const Mesh& m = *g.mesh;
-    std::vector<unsigned> indices;
+    std::vector<bool> isFloat(m.triangles.size());
     for (size_t t = 0; t < m.triangles.size(); ++t) {
-        if (!floatPiece(g, boxes[t])) continue;
-        g.triangles.push_back({-1, int(t)});
-        indices.insert(indices.end(), m.triangles[t].begin(), m.triangles[t].end());
-        g.floatReach = std::max(g.floatReach, reachFrom(boxes[t], g.frame.origin()));
+        Bounds3 b = triangleBounds(m, t);
+        isFloat[t] = floatPiece(g, b);
+        if (isFloat[t]) g.floatReach = std::max(g.floatReach, reachFrom(b, g.frame.origin()));
+        else g.exact.push_back({-1, int(t)});
     }
-    if (indices.empty()) return;
-    bool all = g.triangles.size() == m.triangles.size();
-    if (all) g.triangles.clear();
-    RTCGeometry geom = all ? newTriangles(device_, m.vertices, g.frame.origin(), m.triangles.front().data(),
-                                          m.triangles.size(), true)
-                           : newTriangles(device_, m.vertices, g.frame.origin(), indices.data(), indices.size() / 3,
-                                          false);
+    if (g.exact.size() == m.triangles.size()) return;
+    RTCGeometry geom;
+    if (g.exact.empty()) {
+        geom = newTriangles(device_, m.vertices, g.frame.origin(), m.triangles.front().data(), m.triangles.size(), true);
+    } else {
+        std::vector<unsigned> indices;
+        for (size_t t = 0; t < m.triangles.size(); ++t) {
+            if (!isFloat[t]) continue;
+            g.triangles.push_back({-1, int(t)});
+            indices.insert(indices.end(), m.triangles[t].begin(), m.triangles[t].end());
+        }
+        geom = newTriangles(device_, m.vertices, g.frame.origin(), indices.data(), indices.size() / 3, false);
+    }
     rtcSetGeometryUserData(geom, &g);
     rtcSetGeometryIntersectFilterFunction(geom, filterTriangle);
     rtcSetGeometryOccludedFilterFunction(geom, filterShadowTriangle);
     attach(g.scene, geom, kTrianglesGeom);
 }
 
-// Spheres, cones and rings, and the triangles of polygons and meshes that are not float triangles: user
-// geometry, intersected in double precision.
-void SceneGeometry::addExactShapes(Group& g, const std::vector<Bounds3>& boxes) {
-    if (g.mesh)
-        for (size_t t = 0; t < g.mesh->triangles.size(); ++t)
-            if (!floatPiece(g, boxes[t])) g.exact.push_back({-1, int(t)});
+// Spheres, cones and rings, and the triangles of polygons and meshes that are not float triangles (those of
+// meshes found by addMeshTriangles): user geometry, intersected in double precision.
+void SceneGeometry::addExactShapes(Group& g) {
     for (int s = g.firstSurface; s < g.endSurface; ++s) {
         if (floatPolygon(g, s)) continue;
         if (const auto* poly = std::get_if<Polygon>(&layout_.surfaces[s].shape))

@@ -97,12 +97,12 @@ private:
         const dvec3* onPlane;
     };
     std::vector<Bounds3> pieceBoxes(Group& group, int prototype) const;
-    void buildGroup(Group& group, const std::vector<Bounds3>& pieces);
+    void buildGroup(Group& group);
     static bool floatPiece(const Group& group, const Bounds3& box);
     bool floatPolygon(const Group& group, int surface) const;
     void addPolygons(Group& group);
-    void addMeshTriangles(Group& group, const std::vector<Bounds3>& triangleBoxes);
-    void addExactShapes(Group& group, const std::vector<Bounds3>& triangleBoxes);
+    void addMeshTriangles(Group& group);
+    void addExactShapes(Group& group);
     void addPlacements(const std::vector<Bounds3>& items);
     Bounds3 placedBounds(const Placement& placement) const;
     static bool traceable(const Bounds3& box);

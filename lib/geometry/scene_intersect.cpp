@@ -271,7 +271,7 @@ std::optional<ShapeHit> SceneGeometry::exactHit(const Group& g, unsigned prim, c
                 if (leaving) return std::nullopt;
                 return s.intersect(ray);
             } else if constexpr (std::is_same_v<T, Polygon>) {
-                return std::nullopt;
+                return std::nullopt;  // flat pieces are met above
             } else {
                 return s.intersect(ray, leaving);
             }
