@@ -13,7 +13,7 @@
 #include "fuzz/exercise_rays.h"
 #include "fuzz/exercise_view.h"
 #include "fuzz/mesh_invariants.h"
-#include "integrator/render_scene.h"
+#include "world/render_scene.h"
 #include "scene/mesh.h"
 #include "scene/octree.h"
 #include "scene/reader.h"

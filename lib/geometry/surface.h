@@ -1,4 +1,4 @@
-// Scene objects that are surfaces, turned into exact shapes.
+// The exact shapes of surfaces, and what moving them and measuring them needs.
 #pragma once
 #include <optional>
 #include <string>
@@ -6,25 +6,17 @@
 
 #include "geometry/shapes.h"
 #include "geometry/transform.h"
-#include "scene/scene.h"
 
 namespace brume {
 
 using Shape = std::variant<Sphere, Cone, Ring, Polygon>;
 
 struct Surface {
-    int object;  // index in Scene::objects
+    int object;  // the scene object it is (its index in Scene::objects)
     Shape shape;
     // Its own modifier is void: a surface of an instanced octree that only instances giving a modifier show.
     bool voidModifier = false;
 };
-
-// sphere, bubble, polygon, cone, cup, cylinder, tube, ring.
-bool isSurfaceType(const std::string& type);
-
-// The surface of scene object `index`. Throws Error (file:line) on malformed arguments; returns nullopt
-// with a warning for a degenerate surface (e.g. a polygon of zero area), which Radiance also drops.
-std::optional<Surface> makeSurface(const Scene& scene, int index);
 
 // Whether the shape lies within ±1e18, the coordinates Embree can trace in single precision.
 bool withinTraceableRange(const Shape& shape);

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "integrator/integrator.h"
+#include "io/ray_record.h"
+#include "scene/scene.h"
 #include "spectrum/color_output.h"
 
 namespace brume {

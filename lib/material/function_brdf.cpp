@@ -10,11 +10,6 @@ namespace {
 constexpr double kTiny = 1e-6;  // Radiance's FTINY
 }
 
-bool isFunctionBrdfType(const std::string& t) {
-    return t == "plasfunc" || t == "metfunc" || t == "transfunc" || t == "plasdata" || t == "metdata" ||
-           t == "transdata";
-}
-
 // Strings: func funcfile [transform], or func datafile funcfile v0 … [transform] (one coordinate function per
 // dimension of the data). Reals: red green blue rspec (trans tspec for the trans types) A5 …
 FunctionBrdfMaterial::FunctionBrdfMaterial(const SceneObject& o, const MaterialSettings& settings,

@@ -31,6 +31,4 @@ private:
     std::vector<cal::FuncId> coordinates_;  // data types: each of (lx, ly, lz, Ω)
 };
 
-bool isFunctionBrdfType(const std::string& type);
-
 }  // namespace brume

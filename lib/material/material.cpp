@@ -1,7 +1,5 @@
 #include "material/material.h"
 
-#include <set>
-
 #include "material/anisotropic.h"
 #include "material/bsdf_material.h"
 #include "material/function_brdf.h"
@@ -9,14 +7,6 @@
 #include "material/specular.h"
 
 namespace brume {
-
-bool isMaterialType(const std::string& t) {
-    static const std::set<std::string> kTypes{"plastic", "metal",  "trans",  "mirror",
-                                              "glass",   "dielectric", "plastic2", "metal2", "trans2", "BSDF"};
-    return kTypes.count(t) > 0 || isFunctionBrdfType(t);
-}
-
-bool isEmitterType(const std::string& t) { return t == "light" || t == "spotlight" || t == "glow" || t == "illum"; }
 
 std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings,
                                                      PatternLibrary& functions) {

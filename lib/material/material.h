@@ -121,7 +121,4 @@ struct MaterialSettings {
 std::vector<std::unique_ptr<Material>> makeMaterials(const Scene& scene, const MaterialSettings& settings,
                                                      PatternLibrary& functions);
 
-bool isMaterialType(const std::string& type);
-bool isEmitterType(const std::string& type);
-
 }  // namespace brume

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <set>
 
-#include "light/emitter.h"
-#include "material/material.h"
 #include "pattern/pattern_types.h"
 #include "pattern/spectral_pattern.h"
 #include "util/error.h"

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <set>
 
 namespace brume {
 
@@ -31,6 +32,24 @@ bool isModifierType(std::string_view type) {
                                                          "source",   "instance", "mesh", "smoke"};
     return std::find(std::begin(kNotModifiers), std::end(kNotModifiers), type) == std::end(kNotModifiers);
 }
+
+bool isMaterialType(const std::string& t) {
+    static const std::set<std::string> kTypes{"plastic", "metal",  "trans",  "mirror",
+                                              "glass",   "dielectric", "plastic2", "metal2", "trans2", "BSDF"};
+    return kTypes.count(t) > 0 || isFunctionBrdfType(t);
+}
+
+bool isFunctionBrdfType(const std::string& t) {
+    return t == "plasfunc" || t == "metfunc" || t == "transfunc" || t == "plasdata" || t == "metdata" ||
+           t == "transdata";
+}
+
+bool isSurfaceType(const std::string& t) {
+    return t == "sphere" || t == "bubble" || t == "polygon" || t == "cone" || t == "cup" || t == "cylinder" ||
+           t == "tube" || t == "ring";
+}
+
+bool isEmitterType(const std::string& t) { return t == "light" || t == "spotlight" || t == "glow" || t == "illum"; }
 
 int Scene::add(SceneObject object) {
     int index = static_cast<int>(objects.size());

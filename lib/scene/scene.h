@@ -32,6 +32,15 @@ struct SceneObject {
 // every other type, including ones unknown here, may.
 bool isModifierType(std::string_view type);
 
+// Radiance's material types (plastic, metal, trans, mirror, glass, dielectric, the function and data BRDFs,
+// BSDF), and among them the BRDFs given by function files (plasfunc, metfunc, transfunc, plasdata, …).
+bool isMaterialType(const std::string& type);
+bool isFunctionBrdfType(const std::string& type);
+// Radiance's surface types: sphere, bubble, polygon, cone, cup, cylinder, tube, ring.
+bool isSurfaceType(const std::string& type);
+// Radiance's emitter types: light, spotlight, glow, illum.
+bool isEmitterType(const std::string& type);
+
 // The bounding cube oconv stored in an octree; rtrace scales some parameters (-ar) by its size.
 struct OctreeCube {
     std::array<double, 3> origin{};

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "geometry/local_frame.h"
-#include "geometry/scene_geometry.h"
+#include "world/scene_geometry.h"
 
 namespace brume::scene_geometry_detail {
 

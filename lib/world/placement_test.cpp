@@ -5,9 +5,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/scene_geometry.h"
 #include "sampling/random.h"
 #include "scene/reader.h"
+#include "world/scene_geometry.h"
+#include "world/scene_surfaces.h"
 
 using namespace brume;
 

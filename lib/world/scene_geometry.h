@@ -13,7 +13,7 @@
 
 #include "geometry/bounds.h"
 #include "geometry/ray.h"
-#include "geometry/scene_layout.h"
+#include "world/scene_layout.h"
 #include "geometry/surface.h"
 
 namespace brume {

@@ -6,6 +6,7 @@
 
 #include "geometry/surface.h"
 #include "geometry/transform.h"
+#include "scene/scene.h"
 
 namespace brume {
 

@@ -1,4 +1,4 @@
-#include "integrator/render_scene.h"
+#include "world/render_scene.h"
 
 #include <algorithm>
 #include <numbers>

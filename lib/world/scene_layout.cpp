@@ -1,6 +1,8 @@
-#include "geometry/scene_layout.h"
+#include "world/scene_layout.h"
 
 #include <algorithm>
+
+#include "world/scene_surfaces.h"
 
 namespace brume {
 

@@ -1,10 +1,10 @@
-#include "geometry/scene_geometry.h"
+#include "world/scene_geometry.h"
 
 #include <cmath>
 #include <limits>
 
 #include "geometry/polygon.h"
-#include "geometry/scene_geometry_group.h"
+#include "world/scene_geometry_group.h"
 
 namespace brume {
 

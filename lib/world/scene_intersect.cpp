@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/scene_geometry_group.h"
+#include "world/scene_geometry_group.h"
 
 namespace brume {
 

@@ -1,4 +1,4 @@
-#include "geometry/scene_geometry.h"
+#include "world/scene_geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -6,6 +6,7 @@
 
 #include "geometry/polygon.h"
 #include "scene/reader.h"
+#include "world/scene_surfaces.h"
 
 using namespace brume;
 

@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
+#include "world/scene_geometry.h"
 #include "light/light.h"
 #include "material/material.h"
 #include "medium/mist.h"
