@@ -7,12 +7,11 @@
 #include <exception>
 #include <iostream>
 
-#include "integrator/integrator.h"
-#include "integrator/persistent_cache.h"
 #include "integrator/render_options.h"
 #include "io/ray_reader.h"
 #include "render/picture_options.h"
 #include "render/progress.h"
+#include "render/sequence.h"
 #include "scene/reader.h"
 #include "view/view_options.h"
 
@@ -83,21 +82,23 @@ std::vector<Batch> readPoints(char format, std::exception_ptr& error) {
 
 // Traces the points as rtrace would, discarding the values: each batch makes the records rtrace's would, and
 // they go to the file after it.
-void cachePoints(const Options& o, const Integrator& integrator, PersistentCache& file, ProgressMeter& progress) {
+void cachePoints(const Options& o, Sequence& sequence, ProgressMeter& progress) {
     std::exception_ptr error;
     std::vector<Batch> batches = readPoints(o.inFormat, error);
     long total = 0;
     for (const Batch& b : batches) total += long(b.rays.size());
     progress.start(total);
+    const Integrator& integrator = sequence.integrator();
+    double time = o.render.time.value_or(0);
     for (const Batch& b : batches) {
-        integrator.forEach(b.rays.size(), [&](size_t i) {
+        sequence.run(b.rays.size(), time, [&](size_t i, WorkItem& item) {
             const InputRay& in = b.rays[i];
             if (in.zero) return;
-            if (o.irradiance) integrator.irradiance(in.org, in.dir, b.first + i);
-            else if (o.picture.irradiance) integrator.irradianceAtHit(in.org, in.dir, b.first + i);
-            else integrator.trace(in.org, in.dir, b.first + i, o.limitDistance ? in.maxDistance : 0);
+            RayQuery q{in.org, in.dir, b.first + i, time, o.limitDistance ? in.maxDistance : 0};
+            if (o.irradiance) integrator.irradiance(q, item);
+            else if (o.picture.irradiance) integrator.irradianceAtHit(q, item);
+            else integrator.trace(q, item);
         });
-        file.sync();
         progress.advance(long(b.rays.size()), long(b.rays.size()));
     }
     progress.finish();
@@ -105,11 +106,10 @@ void cachePoints(const Options& o, const Integrator& integrator, PersistentCache
 }
 
 // Renders the view's picture as rpict would, discarding it: the records it needs go to the file.
-void cachePicture(const Options& o, const Integrator& integrator, PersistentCache& file, ProgressMeter& progress) {
+void cachePicture(const Options& o, Sequence& sequence, ProgressMeter& progress) {
     PictureSettings p = o.picture;
     fitPictureResolution(o.view, p);
-    renderPicture(integrator, o.view, p, &progress);
-    file.sync();
+    sequence.render({o.view, 0, o.render.time}, p, &progress);
 }
 
 int run(int argc, char** argv) {
@@ -127,16 +127,15 @@ int run(int argc, char** argv) {
     if (picture) o.view.validate();
     Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
-    Integrator integrator(renderScene, o.render);
-    if (!integrator.cache()) throw Error("nothing to cache: the irradiance cache needs -ab > 0, -aa > 0 and -ad > 0");
-    PersistentCache file(o.render.cacheFile, scene, o.render, integrator.cache());
+    if (!o.render.usesCache()) throw Error("nothing to cache: the irradiance cache needs -ab > 0, -aa > 0 and -ad > 0");
+    Sequence sequence(scene, renderScene, o.render);
 
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
     tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
     ProgressMeter progress("mkcache", o.reportInterval);
-    if (picture) cachePicture(o, integrator, file, progress);
-    else cachePoints(o, integrator, file, progress);
-    std::fprintf(stderr, "mkcache: %s: %s\n", o.render.cacheFile.c_str(), integrator.cache()->summary().c_str());
+    if (picture) cachePicture(o, sequence, progress);
+    else cachePoints(o, sequence, progress);
+    std::fprintf(stderr, "mkcache: %s: %s\n", o.render.cacheFile.c_str(), sequence.cache()->summary().c_str());
     return 0;
 }
 

@@ -7,14 +7,13 @@
 #include <optional>
 #include <sstream>
 
-#include "integrator/integrator.h"
-#include "integrator/persistent_cache.h"
 #include "integrator/render_options.h"
 #include "render/camera_path.h"
 #include "render/frame_output.h"
 #include "render/picture_options.h"
 #include "render/picture_renderer.h"
 #include "render/progress.h"
+#include "render/sequence.h"
 #include "scene/reader.h"
 #include "util/header.h"
 #include "view/view_options.h"
@@ -68,31 +67,10 @@ OptionTable makeTable(Options& o) {
     return t;
 }
 
-// A frame to render: its view, number and scene time.
-struct Frame {
-    View view;
-    int number;
-    std::optional<double> time;
-};
-
-// The next view of a -S sequence: view lines on the standard input change the view cumulatively (as
-// Radiance's rpict); a line may also set the scene time with -T.
-bool nextViewLine(View& view, std::optional<double>& time) {
-    std::string line;
-    while (std::getline(std::cin, line)) {
-        if (!isViewLine(line) || parseViewString(view, line) == 0) continue;
-        std::istringstream words(line);
-        for (std::string w; words >> w;)
-            if (w == "-T" && words >> w) time = toReal("-T", w);
-        return true;
-    }
-    return false;
-}
-
 // Radiance's rpict header, in its order: the octree's header, the command, SOFTWARE=, FRAME=, VIEW=,
 // PIXASPECT=, CAPDATE=, GMT=, PRIMARIES= (FORMAT= is the writer's); Brume's SCENETIME= after PIXASPECT=.
 // A later frame on the standard output starts at FRAME=, continuing the first frame's header, as Radiance's.
-std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::string>& command, const Frame& f,
+std::vector<std::string> headerFor(const Scene& scene, const std::vector<std::string>& command, const SequenceFrame& f,
                                    const PictureSettings& p, bool laterFrame) {
     std::vector<std::string> h;
     std::istringstream software(softwareAndDates());
@@ -125,10 +103,9 @@ class Rpict {
 public:
     Rpict(const Options& o, const Scene& scene, std::vector<std::string> command)
         : o_(o), scene_(scene), renderScene_(scene, o.render.materials), command_(std::move(command)),
-          progress_("rpict", o.reportInterval), cache_(makeCache(renderScene_, o.render)),
-          cacheFile_(openCacheFile(scene, o.render, cache_)) {}
+          progress_("rpict", o.reportInterval), sequence_(scene, renderScene_, o.render) {}
 
-    void render(const Frame& f) {
+    void render(const SequenceFrame& f) {
         f.view.validate();
         std::string picturePath = o_.output.empty() ? "" : frameFileName(o_.output, f.number);
         if (!picturePath.empty() && !claimFile(picturePath)) {
@@ -144,25 +121,14 @@ public:
     }
 
 private:
-    void renderTo(const Frame& f, const std::string& picturePath) {
+    void renderTo(const SequenceFrame& f, const std::string& picturePath) {
         PictureSettings p = o_.picture;
         p.depth = !o_.depthOutput.empty();
         p.drawSources = o_.render.directVisible && p.aperture == 0;
         fitPictureResolution(f.view, p);
-        RenderSettings settings = o_.render;
-        settings.time = f.time;
-        // Later frames reuse the records of earlier ones, made at the same instant: smoke that evolves
-        // changes the light everywhere.
-        if (cache_ && renderScene_.variesInTime() && f.time != cacheTime_) {
-            if (cacheFile_) throw Error("-af: the smoke changes in time and frames have other instants than -T: "
-                                        "one cache file cannot serve them");
-            cache_ = makeCache(renderScene_, settings);
-            cacheTime_ = f.time;
-        }
-        Integrator integrator(renderScene_, settings, cache_);
-        RenderedPicture r = renderPicture(integrator, f.view, p, &progress_);
-        if (cacheFile_) cacheFile_->sync();
-        if (cache_ && o_.reportInterval > 0) std::fprintf(stderr, "rpict: irradiance cache: %s\n", cache_->summary().c_str());
+        RenderedPicture r = sequence_.render(f, p, &progress_);
+        if (sequence_.cache() && o_.reportInterval > 0)
+            std::fprintf(stderr, "rpict: irradiance cache: %s\n", sequence_.cache()->summary().c_str());
         bool laterFrame = picturePath.empty() && framesOnOutput_++ > 0;
         r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
         if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture, laterFrame);
@@ -175,9 +141,7 @@ private:
     RenderScene renderScene_;
     std::vector<std::string> command_;
     ProgressMeter progress_;
-    std::shared_ptr<IrradianceCache> cache_;
-    std::optional<double> cacheTime_ = o_.render.time;  // the instant cache_'s records were made at
-    std::unique_ptr<PersistentCache> cacheFile_;
+    Sequence sequence_;
     int framesOnOutput_ = 0;
 };
 
@@ -208,18 +172,10 @@ int run(int argc, char** argv) {
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
     tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);  // deep ray trees
     Rpict rpict(o, scene, line->command);
-    if (path) {
-        int number = std::max(o.sequenceStart, 1);
-        for (const TimedView& tv : path->frames(o.view, o.framesPerSecond)) rpict.render({tv.view, number++, tv.time});
-    } else if (o.sequenceStart > 0) {
-        Frame f{o.view, o.sequenceStart, o.render.time};
-        while (nextViewLine(f.view, f.time)) {
-            rpict.render(f);
-            f.number++;
-        }
-    } else {
-        rpict.render({o.view, 0, o.render.time});
-    }
+    Frames frames = path                  ? Frames::along(*path, o.view, o.framesPerSecond, std::max(o.sequenceStart, 1))
+                    : o.sequenceStart > 0 ? Frames::viewLines(std::cin, o.view, o.sequenceStart, o.render.time)
+                                          : Frames::single(o.view, o.render.time);
+    while (std::optional<SequenceFrame> f = frames.next()) rpict.render(*f);
     return 0;
 }
 

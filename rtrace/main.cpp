@@ -5,11 +5,10 @@
 #include <cstdio>
 #include <iostream>
 
-#include "integrator/integrator.h"
-#include "integrator/persistent_cache.h"
 #include "integrator/render_options.h"
 #include "io/ray_reader.h"
 #include "io/value_writer.h"
+#include "render/sequence.h"
 #include "scene/reader.h"
 #include "util/header.h"
 
@@ -97,8 +96,8 @@ int run(int argc, char** argv) {
     setSpectralSampling(o.render.sampling);
     Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
-    Integrator integrator(renderScene, o.render);
-    std::unique_ptr<PersistentCache> cacheFile = openCacheFile(scene, o.render, integrator.cache());
+    Sequence sequence(scene, renderScene, o.render);
+    const Integrator& integrator = sequence.integrator();
     ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene, o.color);
     if (o.header) writeHeader(scene, line->command, writer, o.color, o.outFormat);
     if (o.xres > 0 && o.yres > 0) std::printf("-Y %8d +X %8d\n", o.yres, o.xres);
@@ -117,15 +116,15 @@ int run(int argc, char** argv) {
         records.assign(rays.size(), RayRecord{});
         trees.assign(writer.tracing() ? rays.size() : 0, RayTree{{}, writer.tracesShadowRays()});
         uint64_t base = batches.first();
-        integrator.forEach(rays.size(), [&](size_t i) {
+        sequence.run(rays.size(), o.render.time.value_or(0), [&](size_t i, WorkItem& item) {
             const InputRay& in = rays[i];
             if (in.zero) return;
             RayTree* tree = trees.empty() ? nullptr : &trees[i];
-            if (o.irradiance) records[i] = integrator.irradiance(in.org, in.dir, base + i, tree);
-            else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(in.org, in.dir, base + i, tree);
-            else records[i] = integrator.trace(in.org, in.dir, base + i, o.limitDistance ? in.maxDistance : 0, tree);
+            RayQuery q{in.org, in.dir, base + i, o.render.time.value_or(0), o.limitDistance ? in.maxDistance : 0};
+            if (o.irradiance) records[i] = integrator.irradiance(q, item, tree);
+            else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(q, item, tree);
+            else records[i] = integrator.trace(q, item, tree);
         });
-        if (cacheFile) cacheFile->sync();
         for (size_t i = 0; i < rays.size(); ++i) {
             InputRay in = rays[i];
             if (in.zero) {

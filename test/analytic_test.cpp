@@ -70,7 +70,7 @@ struct IntegratingSphere {
         Integrator integrator(t.render, s);
         double sum = 0;
         const dvec3 dirs[] = {{0, 0, -1}, {1, 0, 0}, {0, 1, 0}, {-0.6, 0.8, 0}, {0, -0.6, 0.8}, {0.48, 0.6, -0.64}};
-        for (int i = 0; i < 6; ++i) sum += integrator.irradiance(dirs[i] * (1 - 1e-4), -dirs[i], uint64_t(i)).value[0];
+        for (int i = 0; i < 6; ++i) sum += test::irradiance(integrator, dirs[i] * (1 - 1e-4), -dirs[i], uint64_t(i)).value[0];
         return sum / 6;
     }
 };

@@ -22,10 +22,10 @@ struct Sensor {
 };
 
 // Irradiance (luminance channel weights) at each sensor, as rtrace -I computes it: through the cache's passes.
-std::vector<double> sensorValues(const Integrator& integrator, const std::vector<Sensor>& sensors) {
+std::vector<double> sensorValues(Sequence& sequence, const std::vector<Sensor>& sensors) {
     std::vector<double> values(sensors.size());
-    integrator.forEach(sensors.size(), [&](size_t i) {
-        values[i] = brightness(integrator.irradiance(sensors[i].point, sensors[i].normal, i).value);
+    sequence.run(sensors.size(), 0, [&](size_t i, WorkItem& item) {
+        values[i] = brightness(sequence.integrator().irradiance({sensors[i].point, sensors[i].normal, i}, item).value);
     });
     return values;
 }
@@ -71,8 +71,8 @@ TEST(CachedIrradiance, IntegratingSphereReachesTheAllBounceAnswer) {
         TestScene t(integratingSphere(rho));
         for (int bounces : {5, 20}) {
             if (rho < 0.8 && bounces > 5) continue;  // nothing left to show there
-            Integrator integrator(t.render, cached(bounces));
-            std::vector<double> values = sensorValues(integrator, onTheSphere(64));
+            Sequence sequence(t.scene, t.render, cached(bounces));
+            std::vector<double> values = sensorValues(sequence, onTheSphere(64));
             double expected = direct / (1 - rho), mean = 0;
             for (size_t i = 0; i < values.size(); ++i) {
                 ASSERT_NEAR(values[i], expected, 0.035 * expected) << "rho " << rho << " -ab " << bounces << " #" << i;
@@ -92,11 +92,11 @@ TEST(CachedIrradiance, GroundUnderAUniformSkyGivesPiRhoL) {
                 "skyglow source sky 0 0 4 0 0 1 180\n"
                 "void plastic ground 0 0 5 .3 .3 .3 0 0\n"
                 "ground polygon floor 0 0 12 -500 -500 0 500 -500 0 500 500 0 -500 500 0\n");
-    Integrator integrator(t.render, cached(2));
+    Sequence sequence(t.scene, t.render, cached(2));
     std::vector<Sensor> sensors;
     for (int i = 0; i < 16; ++i) sensors.push_back({dvec3(0.37 * i - 3, 0.21 * i, 1 + 0.1 * i), dvec3(0, 0, -1)});
     for (int i = 0; i < 8; ++i) sensors.push_back({dvec3(0.5 * i, -1, 1.5), dvec3(std::cos(i), std::sin(i), 0)});
-    std::vector<double> values = sensorValues(integrator, sensors);
+    std::vector<double> values = sensorValues(sequence, sensors);
     for (size_t i = 0; i < values.size(); ++i) {
         double expected = i < 16 ? pi * 0.3 * 2 : pi * 2 / 2 + pi * 0.3 * 2 / 2;
         EXPECT_NEAR(values[i], expected, 0.02 * expected) << "sensor " << i;
@@ -109,8 +109,8 @@ TEST(CachedIrradiance, RecordsDoNotDependOnTheThreadCount) {
                                          "grey polygon shelf 0 0 12 -.5 -.5 -.2 .5 -.5 -.2 .5 .5 -.2 -.5 .5 -.2\n");
     auto run = [&](int threads) {
         tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
-        Integrator integrator(t.render, cached(3, 0.2));
-        return sensorValues(integrator, onTheSphere(100));
+        Sequence sequence(t.scene, t.render, cached(3, 0.2));
+        return sensorValues(sequence, onTheSphere(100));
     };
     EXPECT_EQ(run(1), run(2));
 }
@@ -143,8 +143,8 @@ TEST(CachedIrradiance, OfficeSensorsStayWithinTheAccuracyOfTheIndirectLight) {
         TestScene t(xform + office + "\n");
         std::vector<Sensor> moved = sensors;
         for (Sensor& s : moved) s.point += offset;
-        Integrator integrator(t.render, cached(5, 0.1));
-        std::vector<double> values = sensorValues(integrator, moved);
+        Sequence sequence(t.scene, t.render, cached(5, 0.1));
+        std::vector<double> values = sensorValues(sequence, moved);
         int within = 0;
         double worst = 0, squares = 0;
         for (size_t i = 0; i < sensors.size(); ++i) {
@@ -155,7 +155,7 @@ TEST(CachedIrradiance, OfficeSensorsStayWithinTheAccuracyOfTheIndirectLight) {
         }
         std::printf("offset %g %g %g: %d of %zu sensors within -aa of the indirect light, RMS %.2f%%, worst %.2f%%; %s\n",
                     offset.x, offset.y, offset.z, within, sensors.size(), 100 * std::sqrt(squares / sensors.size()),
-                    100 * worst, integrator.cache()->summary().c_str());
+                    100 * worst, sequence.cache()->summary().c_str());
         EXPECT_GE(within, int(0.99 * sensors.size())) << "offset " << offset.x;
         EXPECT_LE(worst, 3 * 0.1) << "offset " << offset.x;
     }
@@ -176,12 +176,12 @@ TEST(CachedIrradiance, GlossySurfacesKeepTheirHighlights) {
                 "paint polygon east 0 0 12 3 -3 0 3 3 0 3 3 3 3 -3 3\n"
                 "paint polygon west 0 0 12 -3 -3 0 -3 -3 3 -3 3 3 -3 3 0\n");
     auto meanOfRays = [&](const RenderSettings& s) {
-        Integrator integrator(t.render, s);
+        Sequence sequence(t.scene, t.render, s);
         std::vector<double> values(64);
-        integrator.forEach(values.size(), [&](size_t i) {
+        sequence.run(values.size(), 0, [&](size_t i, WorkItem& item) {
             dvec3 target(-1.5 + 0.4 * (i % 8), -1.5 + 0.4 * double(i / 8), 0);  // floor points, some in the highlight
             dvec3 eye(-2.5, -2.5, 1.5);
-            values[i] = brightness(integrator.trace(eye, target - eye, i).value);
+            values[i] = brightness(sequence.integrator().trace({eye, target - eye, i}, item).value);
         });
         double sum = 0;
         for (double v : values) sum += v;

@@ -58,7 +58,7 @@ struct TempFile {
 
 // Irradiance where a ray straight down meets the floor (rtrace -i), a deterministic closed form there.
 double floorIrradiance(const Integrator& integrator, double x, double y, uint64_t index) {
-    return integrator.irradianceAtHit(dvec3(x, y, 1), dvec3(0, 0, -1), index).value[0];
+    return test::irradianceAtHit(integrator, dvec3(x, y, 1), dvec3(0, 0, -1), index).value[0];
 }
 
 }  // namespace
@@ -89,12 +89,12 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
         double lit = 0;  // by the lamp inside the instance
         for (size_t i = 0; i < std::size(targets); ++i) {
             dvec3 p = t.point(targets[i]), up = glm::normalize(t.vector(dvec3(0.1, 0.2, 1)));
-            RayRecord ra = a.trace(p + 2.0 * up, -up, i), rb = b.trace(p + 2.0 * up, -up, i);
+            RayRecord ra = test::trace(a, p + 2.0 * up, -up, i), rb = test::trace(b, p + 2.0 * up, -up, i);
             EXPECT_NEAR(ra.firstLength, rb.firstLength, 1e-8 * rb.firstLength) << transforms[n] << " target " << i;
             EXPECT_LT(relative(ra.value, rb.value), 1e-6) << transforms[n] << " target " << i;
             dvec3 floor(p.x, p.y, -1.05);
-            Spectrum ea = a.irradiance(floor, dvec3(0, 0, 1), i).value;
-            EXPECT_LT(relative(ea, b.irradiance(floor, dvec3(0, 0, 1), i).value), 1e-6)
+            Spectrum ea = test::irradiance(a, floor, dvec3(0, 0, 1), i).value;
+            EXPECT_LT(relative(ea, test::irradiance(b, floor, dvec3(0, 0, 1), i).value), 1e-6)
                 << transforms[n] << " sensor " << i;
             lit += ea[0];
         }
@@ -142,13 +142,13 @@ TEST(Instance, SmoothMeshShadesWithItsInterpolatedNormal) {
     Integrator integrator(t.render, fixedSeed());
     dvec3 n = glm::normalize(dvec3(.3, .1, 1));
     for (double x : {-1.0, 0.2, 1.5}) {
-        RayRecord hit = integrator.irradianceAtHit(dvec3(x, 0.3, 1), dvec3(0, 0, -1), 0);
+        RayRecord hit = test::irradianceAtHit(integrator, dvec3(x, 0.3, 1), dvec3(0, 0, -1), 0);
         EXPECT_NEAR(glm::dot(hit.normal, n), 1, 1e-6);  // -on: the perturbed normal
         EXPECT_NEAR(hit.surfaceNormal.z, 1, 1e-12);     // -oN: the triangle's
-        double sensor = integrator.irradiance(dvec3(x, 0.3, 0), n, 0).value[0];
+        double sensor = test::irradiance(integrator, dvec3(x, 0.3, 0), n, 0).value[0];
         EXPECT_NEAR(hit.value[0], sensor, 1e-6 * sensor) << x;
     }
-    RayRecord below = integrator.trace(dvec3(0.2, 0.3, -1), dvec3(0, 0, 1), 0);
+    RayRecord below = test::trace(integrator, dvec3(0.2, 0.3, -1), dvec3(0, 0, 1), 0);
     EXPECT_NEAR(glm::dot(below.normal, -n), 1, 1e-6);
 }
 
@@ -168,7 +168,7 @@ TEST(Instance, ModifierOfAnInstanceOrMeshReplacesTheMaterialsInside) {
                 voidObj.path.string() + " -t 5 5 0\n0\n0\n");
     Integrator integrator(t.render, fixedSeed());
     auto names = [&](double x, double y) {
-        RayRecord r = integrator.trace(dvec3(x + 0.2, y + 0.1, 3), dvec3(0, 0, -1), 0);
+        RayRecord r = test::trace(integrator, dvec3(x + 0.2, y + 0.1, 3), dvec3(0, 0, -1), 0);
         const auto& o = t.scene.objects;
         return o[r.surfaceObject].name + " " + o[r.modifierObject].name;
     };

@@ -33,7 +33,7 @@ TEST(Integrator, SunThroughGlassReachesASensorOnceWhateverTheBounces) {
         s.ambientBounces = bounces;
         s.ambientDivisions = 64;
         Integrator integrator(t.render, s);
-        EXPECT_NEAR(integrator.irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], sunThroughGlass(), 1e-3 * sunThroughGlass())
+        EXPECT_NEAR(test::irradiance(integrator, dvec3(0), dvec3(0, 0, 1), 0).value[0], sunThroughGlass(), 1e-3 * sunThroughGlass())
             << "-ab " << bounces;
     }
 }
@@ -44,7 +44,7 @@ TEST(Integrator, ZeroAmbientDivisionsKeepDirectLight) {
     s.ambientBounces = 2;
     s.ambientDivisions = 0;
     Integrator integrator(t.render, s);
-    EXPECT_NEAR(integrator.irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], sunThroughGlass(), 1e-3 * sunThroughGlass());
+    EXPECT_NEAR(test::irradiance(integrator, dvec3(0), dvec3(0, 0, 1), 0).value[0], sunThroughGlass(), 1e-3 * sunThroughGlass());
 }
 
 // -dv- hides sources from the rays that look at them, not the light a glossy surface reflects of them.
@@ -60,13 +60,13 @@ TEST(Integrator, InvisibleSourcesStillLightGlossySurfaces) {
     double sumA = 0, sumB = 0;
     for (int i = 0; i < 400; ++i) {
         dvec3 org(-1, 0, 1), dir = glm::normalize(dvec3(1, 0, -1));
-        sumA += a.trace(org, dir, i).value[0];
-        sumB += b.trace(org, dir, i).value[0];
+        sumA += test::trace(a, org, dir, i).value[0];
+        sumB += test::trace(b, org, dir, i).value[0];
     }
     EXPECT_GT(sumA, 0);
     EXPECT_NEAR(sumB, sumA, 0.05 * sumA);
-    EXPECT_EQ(b.trace(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
-    EXPECT_EQ(a.trace(dvec3(0, 0, 0.5), dvec3(0, 0, 1), 0).value[0], 100.f);
+    EXPECT_EQ(test::trace(b, dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    EXPECT_EQ(test::trace(a, dvec3(0, 0, 0.5), dvec3(0, 0, 1), 0).value[0], 100.f);
 }
 
 // An antimatter sphere cuts a hole in an opaque ceiling: light passes there and nowhere else.
@@ -79,12 +79,12 @@ TEST(Integrator, AntimatterCutsHolesInTheModifiersItNames) {
     const double expected = std::numbers::pi * 100 * 0.05 * 0.05;  // πL(r/d)², d = 2
     RenderSettings s = fixedSeed();
     TestScene closed(scene);
-    EXPECT_EQ(Integrator(closed.render, s).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    EXPECT_EQ(test::irradiance(Integrator(closed.render, s), dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
     TestScene holed(scene + "void antimatter hole 1 grey 0 0\nhole sphere cut 0 0 4 0 0 1 0.5\n");
     Integrator integrator(holed.render, s);
-    EXPECT_NEAR(integrator.irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], expected, 0.005 * expected);
+    EXPECT_NEAR(test::irradiance(integrator, dvec3(0), dvec3(0, 0, 1), 0).value[0], expected, 0.005 * expected);
     // Looking up through the hole, a ray sees the bulb; the antimatter surface itself is invisible.
-    EXPECT_EQ(integrator.trace(dvec3(0), dvec3(0, 0, 1), 0).value[0], 100.f);
+    EXPECT_EQ(test::trace(integrator, dvec3(0), dvec3(0, 0, 1), 0).value[0], 100.f);
 }
 
 namespace {
@@ -128,11 +128,11 @@ TEST(Integrator, ShadowRaysShiftedOnTheWayToAMirrorMissTheImage) {
                              "void mirror silver 0 0 3 .8 .8 .8\n"
                              "silver polygon wall 0 0 12 1 -1 0 1 -1 3 1 1 3 1 1 0\n";
     TestScene bare(room);
-    EXPECT_GT(Integrator(bare.render, fixedSeed()).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    EXPECT_GT(test::irradiance(Integrator(bare.render, fixedSeed()), dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
     TestScene slab(room + "void dielectric crown 0 0 5 1 1 1 1.5 0\n"
                           "crown polygon near 0 0 12 .3 -5 -1 .3 -5 .9 .3 5 .9 .3 5 -1\n"
                           "crown polygon far 0 0 12 .8 -5 -1 .8 5 -1 .8 5 .9 .8 -5 .9\n");
-    EXPECT_EQ(Integrator(slab.render, fixedSeed()).irradiance(dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
+    EXPECT_EQ(test::irradiance(Integrator(slab.render, fixedSeed()), dvec3(0), dvec3(0, 0, 1), 0).value[0], 0.f);
 }
 
 // With -ab, paths that reach the lamp through the mirror are counted once: by its image when -dr is on,

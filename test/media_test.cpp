@@ -70,7 +70,7 @@ Spectrum meanRadiance(const Integrator& integrator, const TestRay& ray, int n, d
     Spectrum sum(0.f);
     double squares = 0;
     for (int i = 0; i < n; ++i) {
-        Spectrum v = integrator.trace(ray.org, ray.dir, uint64_t(i)).value;
+        Spectrum v = test::trace(integrator, ray.org, ray.dir, uint64_t(i)).value;
         sum += v;
         squares += double(v[0]) * v[0];
     }
@@ -87,7 +87,7 @@ TEST(Media, AbsorptionMatchesRadiance) {
     std::vector<double> radiance = radianceOutput("a1.txt");
     std::vector<TestRay> rays = raysOf("a_rays.txt");
     for (size_t i = 0; i < rays.size(); ++i) {
-        Spectrum v = integrator.trace(rays[i].org, rays[i].dir, 0).value;
+        Spectrum v = test::trace(integrator, rays[i].org, rays[i].dir, 0).value;
         EXPECT_NEAR(v[0], radiance[i], 1e-5 * radiance[i]) << "ray " << i;
     }
 }
@@ -173,7 +173,7 @@ TEST(Media, SensorsLitThroughAMist) {
     Integrator integrator(t.render, settings("-ab 0"));
     std::vector<TestRay> sensors = raysOf("c_sensors.txt");
     for (size_t i = 0; i < sensors.size(); ++i)
-        EXPECT_NEAR(integrator.irradiance(sensors[i].org, sensors[i].dir, 0).value[0], reference[i], 1e-4 * reference[i])
+        EXPECT_NEAR(test::irradiance(integrator, sensors[i].org, sensors[i].dir, 0).value[0], reference[i], 1e-4 * reference[i])
             << "sensor " << i;
 }
 
@@ -218,7 +218,7 @@ TEST(Smoke, BeerLambert) {
         std::string k = std::to_string(tau / 7);
         TestScene even(kPanel + "void smoke s 1 even.vdb 0 3 " + k + " " + k + " " + k + "\n");
         Integrator a(even.render, settings(""));
-        EXPECT_NEAR(a.trace(kView.org, kView.dir, 0).value[0], std::exp(-tau), 1e-5 * std::exp(-tau)) << tau;
+        EXPECT_NEAR(test::trace(a, kView.org, kView.dir, 0).value[0], std::exp(-tau), 1e-5 * std::exp(-tau)) << tau;
         // Along x from 1 to 8 in the ramp: ∫ x dx = 31.5.
         std::string kr = std::to_string(tau / 31.5);
         TestScene ramped("void glow white 0 0 4 1 1 1 0\n"
@@ -255,7 +255,7 @@ TEST(Smoke, EmptySmokeIsNoMedium) {
     RenderSettings s = settings("-ab 2");
     Integrator a(smoke.render, s), b(clear.render, s);
     for (uint64_t i = 0; i < 20; ++i)
-        EXPECT_EQ(a.trace(dvec3(1, 0, 1), dvec3(0, 0, -1), i).value[0], b.trace(dvec3(1, 0, 1), dvec3(0, 0, -1), i).value[0]);
+        EXPECT_EQ(test::trace(a, dvec3(1, 0, 1), dvec3(0, 0, -1), i).value[0], test::trace(b, dvec3(1, 0, 1), dvec3(0, 0, -1), i).value[0]);
 }
 
 // White furnace: inside a sphere glowing L = 1 all over its inside, smoke of albedo 1 (optical radius .88 and
@@ -300,7 +300,7 @@ TEST(Smoke, IntegratingSphereFilledWithWhiteSmokeKeepsItsIrradiance) {
         for (int i = 0; i < 24; ++i) {
             const double z = 2 * random.uniform() - 1, phi = 2 * M_PI * random.uniform(), r = std::sqrt(1 - z * z);
             const dvec3 wall(r * std::cos(phi), r * std::sin(phi), z);
-            sum += integrator.irradiance(wall * (1 - 1e-4), -wall, uint64_t(i)).value[0];
+            sum += test::irradiance(integrator, wall * (1 - 1e-4), -wall, uint64_t(i)).value[0];
         }
         EXPECT_NEAR(sum / 24, expected, 0.025 * expected) << "g " << g;
     }
@@ -314,7 +314,7 @@ TEST(Smoke, SpectrumModifierMakesExtinctionSpectral) {
     RayPathDir dir;
     writeBox(dir, "even.vdb", 1.0f);
     TestScene t(kPanel + "void spectrum soot 0 0 6 437.5 662.5 2 2 1 1\nsoot smoke s 1 even.vdb 0 3 .1 .1 .1\n");
-    Spectrum v = Integrator(t.render, settings("")).trace(kView.org, kView.dir, 0).value;
+    Spectrum v = test::trace(Integrator(t.render, settings("")), kView.org, kView.dir, 0).value;
     ASSERT_EQ(v.size(), 6);
     for (int b = 0; b < 6; ++b) EXPECT_NEAR(v[b], std::exp(-0.7 * (b < 3 ? 1 : 2)), 1e-5) << "band " << b;
 }
@@ -338,7 +338,7 @@ TEST(Smoke, FlamesGlowAsBlackBodies) {
         for (double k : {0.001, 10.0}) {
             TestScene t(black + "void smoke f 2 temperature=temperature flame.vdb 0 3 " + std::to_string(k) + " " +
                         std::to_string(k) + " " + std::to_string(k) + "\n");
-            Spectrum v = Integrator(t.render, settings("")).trace(kView.org, kView.dir, 0).value;
+            Spectrum v = test::trace(Integrator(t.render, settings("")), kView.org, kView.dir, 0).value;
             double expected = luminance * -std::expm1(-7 * k);
             EXPECT_NEAR(179 * photopic(v), expected, (bands == 3 ? 0.01 : 0.005) * expected) << bands << " bands, K " << k;
         }
@@ -359,7 +359,7 @@ TEST(Smoke, InstantsBetweenKeyFramesInterpolate) {
         s.time = time;
         Integrator integrator(t.render, s);
         double density = 1 + 2 * std::clamp((time - 10) / 10, 0.0, 1.0);
-        double v = integrator.trace(kView.org, kView.dir, 0).value[0];
+        double v = test::trace(integrator, kView.org, kView.dir, 0).value[0];
         EXPECT_NEAR(v, std::exp(-0.7 * density), 1e-5) << time;
         EXPECT_LE(v, previous) << time;
         previous = v;
@@ -453,7 +453,7 @@ TEST(Smoke, HostileOpticalDepthsGiveFiniteValues) {
         Spectrum sum(0.f);
         for (uint64_t i = 0; i < 200; ++i)
             for (dvec3 d : {dvec3(0, 1, 0), glm::normalize(dvec3(.3, 1, .2)), glm::normalize(dvec3(1, -.2, .4))}) {
-                Spectrum v = integrator.trace(kView.org, d, i).value;
+                Spectrum v = test::trace(integrator, kView.org, d, i).value;
                 for (int b = 0; b < v.size(); ++b) ASSERT_TRUE(std::isfinite(v[b]) && v[b] >= 0) << k << " " << v[b];
                 if (d.y == 1) sum += v;
             }

@@ -120,9 +120,9 @@ std::vector<Rgb> brumeMeans(const Scene& scene, const std::vector<LabelledRay>& 
         Rgb sum{}, sum2{};
         for (int k = 0; k < runs; ++k) {
             uint64_t index = uint64_t(i) * uint64_t(runs) + uint64_t(k);
-            RayRecord r = mode == Mode::Sensor            ? integrator.irradiance(rays[i].org, rays[i].dir, index)
-                          : mode == Mode::IrradianceAtHit ? integrator.irradianceAtHit(rays[i].org, rays[i].dir, index)
-                                                          : integrator.trace(rays[i].org, rays[i].dir, index);
+            RayRecord r = mode == Mode::Sensor            ? test::irradiance(integrator, rays[i].org, rays[i].dir, index)
+                          : mode == Mode::IrradianceAtHit ? test::irradianceAtHit(integrator, rays[i].org, rays[i].dir, index)
+                                                          : test::trace(integrator, rays[i].org, rays[i].dir, index);
             for (int c = 0; c < 3; ++c) sum[c] += r.value[c], sum2[c] += double(r.value[c]) * r.value[c];
         }
         for (int c = 0; c < 3; ++c) {

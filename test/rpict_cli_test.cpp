@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "io/picture.h"
 #include "io/spectral_picture.h"
+#include "medium/testing.h"
 
 namespace {
 
@@ -226,4 +227,33 @@ TEST_F(RpictCli, SpectralPicturesHoldEveryBand) {
         EXPECT_NEAR(spectrum.values[i], bands[i] * perValue, 1e-4 * bands[i] * perValue + 1e-9) << "value " << i;
     Output hdr = rpict("-cs 41 -pXYZ -ps 1" + view + " s.rad");
     EXPECT_EQ(picture(hdr.out).xyz, true);
+}
+
+// Smoke that changes in time (key frames at 0 and 10 s), a sequence of frames at 0, 10 and 0 s through the
+// irradiance cache: with -af, one file keeps the records of both instants, each serving frames at its own
+// instant only, and the pictures are those rendered without a file, bit for bit (a file changes no value).
+TEST_F(RpictCli, OneCacheFileServesFramesAtSeveralInstants) {
+    using namespace brume::medium::testing;
+    writeGrid(dir() / "thin.vdb", boxGrid({-20, -20, 0}, {20, 20, 20}, 0.1f, 0.1));
+    writeGrid(dir() / "thick.vdb", boxGrid({-20, -20, 0}, {20, 20, 20}, 2.0f, 0.1));
+    std::ofstream(dir() / "smoke.rad") << kScene << "void smoke s 4 0 thin.vdb 10 thick.vdb 0 7 1 1 1 .8 .8 .8 .3\n";
+    const std::string views = "VIEW= -vp 0 -2 1 -vd 0 1 -0.2 -T 0\nVIEW= -vp 0 -2 1 -T 10\nVIEW= -vp 0 -2 1 -T 0\n";
+    const std::string options = "-u- -x 12 -y 12 -ab 1 -ad 32 -aa .2 -S 1 smoke.rad";
+    Output plain = rpict("-o plain%d.hdr " + options, views);
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    Output cached = rpict("-af smoke.cache -o cached%d.hdr " + options, views);
+    ASSERT_EQ(cached.status, 0) << cached.err;
+    for (int i = 1; i <= 3; ++i) {
+        brume::Picture a = picture(brume_test::slurp(dir() / ("plain" + std::to_string(i) + ".hdr")));
+        brume::Picture b = picture(brume_test::slurp(dir() / ("cached" + std::to_string(i) + ".hdr")));
+        EXPECT_EQ(a.pixels, b.pixels) << "frame " << i;
+    }
+    // The instants differ in light: thick smoke at 10 s darkens the floor.
+    brume::Picture early = picture(brume_test::slurp(dir() / "plain1.hdr"));
+    brume::Picture late = picture(brume_test::slurp(dir() / "plain2.hdr"));
+    EXPECT_LT(late.pixels[late.pixels.size() / 2], 0.9f * early.pixels[early.pixels.size() / 2]);
+    // A second run reads the records of both instants and makes few new ones.
+    Output again = rpict("-t 1 -af smoke.cache -o again%d.hdr " + options, views);
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_NE(again.err.find("rpict: irradiance cache: "), std::string::npos) << again.err;
 }

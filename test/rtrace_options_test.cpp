@@ -83,10 +83,12 @@ TEST(AmbientLimit, StopsTheCacheAtAbBouncesAsRadiance) {
         RenderSettings s = test::fixedSeed();
         s.ambientBounces = 2;
         s.ambientLimit = limit;
-        Integrator integrator(t.render, s);
+        Sequence sequence(t.scene, t.render, s);
         const dvec3 dirs[] = {{0, 0, -1}, {1, 0, 0}, {0, 1, 0}, {-0.6, 0.8, 0}, {0, -0.6, 0.8}, {0.48, 0.6, -0.64}};
         std::vector<double> v(6);
-        integrator.forEach(6, [&](size_t i) { v[i] = integrator.irradiance(dirs[i] * (1 - 1e-4), -dirs[i], i).value[0]; });
+        sequence.run(6, 0, [&](size_t i, WorkItem& item) {
+            v[i] = sequence.integrator().irradiance({dirs[i] * (1 - 1e-4), -dirs[i], i}, item).value[0];
+        });
         return (v[0] + v[1] + v[2] + v[3] + v[4] + v[5]) / 6;
     };
     EXPECT_NEAR(measure(false), 2 * direct, 0.02 * 2 * direct);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "integrator/integrator.h"
+#include "render/sequence.h"
 #include "scene/placed_files.h"
 #include "scene/reader.h"
 
@@ -67,10 +68,31 @@ inline RenderSettings fixedSeed() {
     return s;
 }
 
+// One ray or sensor at a time, outside any loop over work items: with a scratch of its own and no cache
+// (paths sample what records would give), at the settings' instant.
+inline RayRecord trace(const Integrator& integrator, const dvec3& org, const dvec3& dir, uint64_t index,
+                       double maxDistance = 0, RayTree* tree = nullptr) {
+    Scratch scratch(integrator.scene());
+    WorkItem item{scratch};
+    return integrator.trace({org, dir, index, integrator.settings().time.value_or(0), maxDistance}, item, tree);
+}
+inline RayRecord irradiance(const Integrator& integrator, const dvec3& p, const dvec3& n, uint64_t index,
+                            RayTree* tree = nullptr) {
+    Scratch scratch(integrator.scene());
+    WorkItem item{scratch};
+    return integrator.irradiance({p, n, index, integrator.settings().time.value_or(0)}, item, tree);
+}
+inline RayRecord irradianceAtHit(const Integrator& integrator, const dvec3& org, const dvec3& dir, uint64_t index,
+                                 RayTree* tree = nullptr) {
+    Scratch scratch(integrator.scene());
+    WorkItem item{scratch};
+    return integrator.irradianceAtHit({org, dir, index, integrator.settings().time.value_or(0)}, item, tree);
+}
+
 // Mean of the first channel of `runs` independent irradiance estimates.
 inline double meanIrradiance(const Integrator& integrator, const dvec3& p, const dvec3& n, int runs) {
     double sum = 0;
-    for (int i = 0; i < runs; ++i) sum += integrator.irradiance(p, n, uint64_t(i)).value[0];
+    for (int i = 0; i < runs; ++i) sum += irradiance(integrator, p, n, uint64_t(i)).value[0];
     return sum / runs;
 }
 

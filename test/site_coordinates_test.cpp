@@ -136,11 +136,11 @@ struct IntegratingSphere {
     // Mean irradiance over sensors on the wall, facing the centre.
     double measure(const RenderSettings& s) const {
         TestScene t(text());
-        Integrator integrator(t.render, s);
+        Sequence sequence(t.scene, t.render, s);
         const dvec3 dirs[] = {{0, 0, -1}, {1, 0, 0}, {0, 1, 0}, {-0.6, 0.8, 0}, {0, -0.6, 0.8}, {0.48, 0.6, -0.64}};
         std::vector<double> values(std::size(dirs));
-        integrator.forEach(values.size(), [&](size_t i) {
-            values[i] = integrator.irradiance(site.at(dirs[i]), -dirs[i], uint64_t(i)).value[0];
+        sequence.run(values.size(), 0, [&](size_t i, WorkItem& item) {
+            values[i] = sequence.integrator().irradiance({site.at(dirs[i]), -dirs[i], uint64_t(i)}, item).value[0];
         });
         double sum = 0;
         for (double v : values) sum += v;
@@ -263,21 +263,22 @@ std::vector<double> valuesAt(const dvec3& offset, const std::string& dir, const 
     s.ambientBounces = bounces;
     s.ambientAccuracy = 0;  // the cache at a site: CachedIrradiance.OfficeSensorsStayWithin…
     s.ambientDivisions = 64;
-    Integrator integrator(t.render, s);
+    Sequence sequence(t.scene, t.render, s);
+    const Integrator& integrator = sequence.integrator();
     const size_t n = rays.size();
     std::vector<double> values(2 * n + sensors.size());
-    integrator.forEach(values.size(), [&](size_t i) {
+    sequence.run(values.size(), 0, [&](size_t i, WorkItem& item) {
         if (i < n)
-            values[i] = brightness(integrator.trace(rays[i].first + offset, rays[i].second, i).value);
+            values[i] = brightness(integrator.trace({rays[i].first + offset, rays[i].second, i}, item).value);
         else if (i < 2 * n)
-            values[i] = brightness(integrator.irradianceAtHit(rays[i - n].first + offset, rays[i - n].second, i).value);
+            values[i] = brightness(integrator.irradianceAtHit({rays[i - n].first + offset, rays[i - n].second, i}, item).value);
         else
-            values[i] = brightness(integrator.irradiance(sensors[i - 2 * n].first + offset, sensors[i - 2 * n].second, i).value);
+            values[i] = brightness(integrator.irradiance({sensors[i - 2 * n].first + offset, sensors[i - 2 * n].second, i}, item).value);
     });
     PictureSettings ps;
     ps.xres = 40, ps.yres = 30;
     fitResolution(view, ps);
-    const std::vector<float>& pixels = renderPicture(integrator, view, ps).picture.pixels;
+    const std::vector<float>& pixels = renderPicture(sequence, view, 0, ps).picture.pixels;
     for (size_t p = 0; p < pixels.size(); p += 3) values.push_back(pixels[p] + pixels[p + 1] + pixels[p + 2]);
     return values;
 }

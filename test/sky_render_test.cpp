@@ -121,7 +121,7 @@ Rendered render(const std::string& skyText) {
     s.ambientDivisions = 1 << 16;
     Integrator integrator(renderScene, s);
     glm::dvec3 origin(0), up(0, 0, 1);
-    return {integrator.trace(origin, up, 0).value[0], test::meanIrradiance(integrator, origin, up, 4)};
+    return {test::trace(integrator, origin, up, 0).value[0], test::meanIrradiance(integrator, origin, up, 4)};
 }
 
 // Tolerances. Zenith: 0.2%, gensky printing four digits and rounding the clear sky's 1 - exp(-0.32) to 0.274

@@ -32,7 +32,7 @@ std::string illuminantASpectrum(const std::string& name) {
 Spectrum radianceAlong(const std::string& scene, const dvec3& org, const dvec3& dir, const RenderSettings& s) {
     TestScene t(scene);
     Integrator integrator(t.render, s);
-    return integrator.trace(org, dir, 0).value;
+    return test::trace(integrator, org, dir, 0).value;
 }
 
 }  // namespace
@@ -68,10 +68,12 @@ TEST(Spectral, IntegratingSphereIn41Bands) {
     TestScene t(scene.str());
     double direct = 4 * pi * lampRadius * lampRadius * pi * lampRadiance / (4 * pi);
     auto mean = [&](const RenderSettings& s) {
-        Integrator integrator(t.render, s);
+        Sequence sequence(t.scene, t.render, s);
         const dvec3 dirs[] = {{0, 0, -1}, {1, 0, 0}, {0, 1, 0}, {-0.6, 0.8, 0}, {0, -0.6, 0.8}, {0.48, 0.6, -0.64}};
         std::vector<Spectrum> values(6);
-        integrator.forEach(6, [&](size_t i) { values[i] = integrator.irradiance(dirs[i] * (1 - 1e-4), -dirs[i], i).value; });
+        sequence.run(6, 0, [&](size_t i, WorkItem& item) {
+            values[i] = sequence.integrator().irradiance({dirs[i] * (1 - 1e-4), -dirs[i], i}, item).value;
+        });
         Spectrum sum(0.f);
         for (const Spectrum& v : values) sum += v * (1.f / 6);
         return sum;
@@ -105,7 +107,7 @@ TEST(Spectral, GreySceneIsTheSameInRgbAndBands) {
         Integrator integrator(t.render, s);
         std::vector<double> lux;
         for (double x : {0.5, 2.0, 3.5})
-            for (double y : {0.5, 2.5}) lux.push_back(179 * photopic(integrator.irradiance({x, y, 0.8}, {0, 0, 1}, 7).value));
+            for (double y : {0.5, 2.5}) lux.push_back(179 * photopic(test::irradiance(integrator, {x, y, 0.8}, {0, 0, 1}, 7).value));
         return lux;
     };
     std::vector<double> rgb = illuminances();

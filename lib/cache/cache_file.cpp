@@ -29,8 +29,8 @@ static_assert(std::endian::native == std::endian::little && std::numeric_limits<
 namespace {
 
 constexpr std::string_view kMagic = "#?BRUME_IRRADIANCE_CACHE";
-constexpr std::string_view kFormat = "brume_irradiance_cache 1";
-constexpr char kBlockTag[4] = {'I', 'R', 'C', 'B'};
+constexpr std::string_view kFormat = "brume_irradiance_cache 2";
+constexpr char kBlockTag[4] = {'S', 'U', 'R', 'F'};  // a block of surface records
 constexpr size_t kHeadSize = 16;
 // A header is a few hundred bytes; one without its empty line within this many is not a cache file's.
 constexpr size_t kMaxHeaderSize = 1 << 16;
@@ -118,9 +118,10 @@ bool finite(const dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) &&
 bool unit(const dvec3& v) { return std::abs(glm::length(v) - 1) < 1e-6; }
 
 // Why a record may not be cached (its numbers would reach the renderer), or null.
-const char* invalidity(const IrradianceRecord& r, int channels) {
-    if (r.values.size() != size_t(IrradianceRecord::kFields) * channels) return "wrong number of values";
+const char* invalidity(const SurfaceRecord& r, int channels) {
+    if (r.values.size() != size_t(SurfaceRecord::kFields) * channels) return "wrong number of values";
     if (!finite(r.point) || !finite(r.normal) || !finite(r.axis)) return "a coordinate is not finite";
+    if (!std::isfinite(r.time)) return "its time is not finite";
     if (!unit(r.normal) || !unit(r.axis)) return "its normal or axis is not a unit vector";
     for (float radius : r.radius)
         if (!(radius > 0) || !std::isfinite(radius)) return "a radius is not positive";
@@ -144,23 +145,25 @@ T get(const char*& p) {
     return value;
 }
 
-void putRecord(char*& p, const IrradianceRecord& r) {
+void putRecord(char*& p, const SurfaceRecord& r) {
     for (const dvec3* v : {&r.point, &r.normal, &r.axis})
         for (int i = 0; i < 3; ++i) put(p, (*v)[i]);
+    put(p, r.time);
     put(p, r.radius[0]);
     put(p, r.radius[1]);
     put(p, int32_t(r.level));
     for (float v : r.values) put(p, v);
 }
 
-IrradianceRecord getRecord(const char*& p, int channels) {
-    IrradianceRecord r;
+SurfaceRecord getRecord(const char*& p, int channels) {
+    SurfaceRecord r;
     for (dvec3* v : {&r.point, &r.normal, &r.axis})
         for (int i = 0; i < 3; ++i) (*v)[i] = get<double>(p);
+    r.time = get<double>(p);
     r.radius[0] = get<float>(p);
     r.radius[1] = get<float>(p);
     r.level = get<int32_t>(p);
-    r.values.resize(size_t(IrradianceRecord::kFields) * channels);
+    r.values.resize(size_t(SurfaceRecord::kFields) * channels);
     for (float& v : r.values) v = get<float>(p);
     return r;
 }
@@ -199,8 +202,8 @@ std::optional<BlockHead> getHead(const char* p) {
 
 CacheFile::CacheFile(std::string path, CacheIdentity identity)
     : path_(std::move(path)), identity_(std::move(identity)),
-      recordSize_(9 * sizeof(double) + 2 * sizeof(float) + sizeof(int32_t) +
-                  size_t(IrradianceRecord::kFields) * identity_.channels * sizeof(float)) {
+      recordSize_(10 * sizeof(double) + 2 * sizeof(float) + sizeof(int32_t) +
+                  size_t(SurfaceRecord::kFields) * identity_.channels * sizeof(float)) {
     std::string header = headerText(identity_);
     fd_ = open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
     if (fd_ < 0) throw Error("cannot open cache file " + path_ + ": " + systemReason());
@@ -264,6 +267,8 @@ void CacheFile::checkHeader() {
     auto refuse = [&](const std::string& what) {
         throw Error("cache file " + path_ + " " + what + "; remove it or use another -af file");
     };
+    if (fields["FORMAT"] == "brume_irradiance_cache 1")
+        refuse("was made by an earlier Brume (cache format 1, whose records have no instant)");
     if (fields["FORMAT"] != kFormat) refuse("has another format (FORMAT=" + fields["FORMAT"] + ")");
     if (fields["SCENE"] != identity_.scene)
         refuse("was made for another scene (its SCENE= differs: the scene or a file it reads has changed)");
@@ -294,7 +299,7 @@ void CacheFile::catchUp() {
         readAt(fd_, path_, records.data(), records.size(), offset_ + kHeadSize);
         if (crc(records.data(), records.size()) != head->recordsCrc)
             corrupted(path_, offset_, "damaged cache block (its checksum does not match its records)");
-        std::vector<IrradianceRecord> block;
+        std::vector<SurfaceRecord> block;
         const char* p = records.data();
         for (uint32_t i = 0; i < head->count; ++i) {
             block.push_back(getRecord(p, identity_.channels));
@@ -307,18 +312,18 @@ void CacheFile::catchUp() {
     }
 }
 
-std::vector<IrradianceRecord> CacheFile::readNew() {
+std::vector<SurfaceRecord> CacheFile::readNew() {
     std::lock_guard guard(mutex_);
     FileLock lock(fd_, path_);
     catchUp();
     return std::exchange(unread_, {});
 }
 
-void CacheFile::append(const std::vector<IrradianceRecord>& records) {
+void CacheFile::append(const std::vector<SurfaceRecord>& records) {
     if (records.empty()) return;
     std::string block(kHeadSize + records.size() * recordSize_, '\0');
     char* p = block.data() + kHeadSize;
-    for (const IrradianceRecord& r : records) {
+    for (const SurfaceRecord& r : records) {
         if (const char* why = invalidity(r, identity_.channels))
             throw std::invalid_argument(std::string("cannot cache an invalid irradiance record: ") + why);
         putRecord(p, r);

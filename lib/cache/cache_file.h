@@ -1,23 +1,25 @@
 // Irradiance cache files (-af): records kept between runs and shared by the threads and processes rendering
-// one scene (../shared/design/RADIANCE_COMPAT.md, "Ambient cache files").
+// one scene, as Radiance's ambient files are (but in Brume's own format, which Radiance's tools do not read).
 //
-// Brume's own format. A text header, ended by an empty line:
+// A text header, ended by an empty line:
 //     #?BRUME_IRRADIANCE_CACHE
-//     FORMAT=brume_irradiance_cache 1
+//     FORMAT=brume_irradiance_cache 2
 //     SCENE=<sceneContentHash>
 //     OPTIONS=<every option that changes cached values>
 //     CHANNELS=<spectrum channels per value>
-// then blocks, each appended whole by one writer: a 16-byte head ("IRCB", the record count, the CRC-32 of the
-// records, the CRC-32 of the head's first 12 bytes) and the records. A record: point, normal, axis as 3
-// doubles each (positions round-trip exactly), the two radii as floats, the level as a 32-bit integer, then
-// CHANNELS × 5 floats of values. All numbers are little-endian IEEE 754, as in memory on x86 and ARM.
+// then blocks, each appended whole by one writer: a 16-byte head (a tag naming the kind of its records, the
+// record count, the CRC-32 of the records, the CRC-32 of the head's first 12 bytes) and the records. Surface
+// records ("SURF"): point, normal, axis as 3 doubles each (positions round-trip exactly), the instant as a
+// double, the two radii as floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
+// numbers are little-endian IEEE 754, as in memory on x86 and ARM. Other kinds of record (volume records)
+// will come as blocks of their own tag. Format 1 (records without an instant) is refused.
 #pragma once
 #include <cstdint>
 #include <mutex>
 #include <string>
 #include <vector>
 
-#include "cache/irradiance_record.h"
+#include "cache/surface_record.h"
 
 namespace brume {
 
@@ -44,11 +46,11 @@ public:
     // through this object are not returned); the first call returns every record in the file. Throws Error
     // naming the file and byte offset of a corrupted block or an invalid record. A last block that a writer
     // left incomplete (it died mid-append) is dropped with a warning and cut from the file.
-    std::vector<IrradianceRecord> readNew();
+    std::vector<SurfaceRecord> readNew();
     // Appends the records as one block, written with one write and synced before the lock is released.
     // Records must have `channels` values of each field and be valid (finite, unit normal and axis, positive
     // radii), else std::invalid_argument. Throws Error when the file cannot be written (it is left as it was).
-    void append(const std::vector<IrradianceRecord>& records);
+    void append(const std::vector<SurfaceRecord>& records);
 
     const std::string& path() const { return path_; }
 
@@ -63,7 +65,7 @@ private:
     size_t recordSize_;
     std::mutex mutex_;
     uint64_t offset_ = 0;  // where the first block not yet read starts
-    std::vector<IrradianceRecord> unread_;
+    std::vector<SurfaceRecord> unread_;
 };
 
 }  // namespace brume

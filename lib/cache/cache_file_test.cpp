@@ -25,35 +25,37 @@ using test::errorOf;
 
 const CacheIdentity kIdentity{"0123456789abcdef0123456789abcdef", "-ab 2 -aa 0.1 -ad 512", 3};
 constexpr size_t kHeadSize = 16;
-constexpr size_t kRecordSize = 9 * 8 + 2 * 4 + 4 + 5 * 3 * 4;
+constexpr size_t kRecordSize = 10 * 8 + 2 * 4 + 4 + 5 * 3 * 4;
 
 // Record `id` (a distinct point per id), with numbers that survive only an exact round trip.
-IrradianceRecord record(double id, int channels = 3) {
-    IrradianceRecord r;
+SurfaceRecord record(double id, int channels = 3) {
+    SurfaceRecord r;
     r.point = {id, 1.0 / 3 + id, std::nextafter(id, 1e300)};
     r.normal = glm::normalize(dvec3(std::sin(id), std::cos(id), 0.7));
     r.axis = glm::normalize(glm::cross(r.normal, dvec3(0.3, -0.2, 0.9)));
     r.radius[0] = float(0.1 + id * 1e-3), r.radius[1] = 0.05f;
     r.level = int(id) % 3;
-    for (int i = 0; i < IrradianceRecord::kFields * channels; ++i) r.values.push_back(float(id) * 0.37f - float(i));
+    r.time = std::nextafter(60 + id, 0.0);
+    for (int i = 0; i < SurfaceRecord::kFields * channels; ++i) r.values.push_back(float(id) * 0.37f - float(i));
     return r;
 }
 
-std::vector<IrradianceRecord> records(double first, int count) {
-    std::vector<IrradianceRecord> rs;
+std::vector<SurfaceRecord> records(double first, int count) {
+    std::vector<SurfaceRecord> rs;
     for (int i = 0; i < count; ++i) rs.push_back(record(first + i));
     return rs;
 }
 
 bool sameBits(const dvec3& a, const dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-void expectSame(const std::vector<IrradianceRecord>& got, const std::vector<IrradianceRecord>& expected) {
+void expectSame(const std::vector<SurfaceRecord>& got, const std::vector<SurfaceRecord>& expected) {
     ASSERT_EQ(got.size(), expected.size());
     for (size_t i = 0; i < got.size(); ++i) {
-        const IrradianceRecord &a = got[i], &b = expected[i];
+        const SurfaceRecord &a = got[i], &b = expected[i];
         EXPECT_TRUE(sameBits(a.point, b.point) && sameBits(a.normal, b.normal) && sameBits(a.axis, b.axis)) << i;
         EXPECT_EQ(std::memcmp(a.radius, b.radius, sizeof a.radius), 0) << i;
         EXPECT_EQ(a.level, b.level) << i;
+        EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof a.time), 0) << i;
         ASSERT_EQ(a.values.size(), b.values.size()) << i;
         EXPECT_EQ(std::memcmp(a.values.data(), b.values.data(), a.values.size() * sizeof(float)), 0) << i;
     }
@@ -94,7 +96,7 @@ protected:
 };
 
 TEST_F(CacheFileTest, RecordsComeBackBitExact) {
-    std::vector<IrradianceRecord> written = records(0.1, 7);
+    std::vector<SurfaceRecord> written = records(0.1, 7);
     CacheFile(path_, kIdentity).append(written);
     expectSame(CacheFile(path_, kIdentity).readNew(), written);
 
@@ -107,7 +109,7 @@ TEST_F(CacheFileTest, RecordsComeBackBitExact) {
 TEST_F(CacheFileTest, NewFileStartsWithItsHeader) {
     overwrite(path_, "");  // an empty file is taken as a new one
     CacheFile file(path_, kIdentity);
-    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 1\n"
+    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 2\n"
                                "SCENE=0123456789abcdef0123456789abcdef\nOPTIONS=-ab 2 -aa 0.1 -ad 512\nCHANNELS=3\n\n");
     EXPECT_TRUE(file.readNew().empty());
     EXPECT_EQ(file.path(), path_);
@@ -144,6 +146,17 @@ TEST_F(CacheFileTest, RefusesAFileMadeForAnotherSceneOptionsOrChannels) {
     }
     // A refused file is left as it was.
     expectSame(CacheFile(path_, kIdentity).readNew(), records(0, 1));
+}
+
+// A file of format 1 (Brume before records kept their instant) is refused, and left as it was.
+TEST_F(CacheFileTest, RefusesAFileOfTheFirstFormat) {
+    std::string old = "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 1\nSCENE=" + kIdentity.scene +
+                      "\nOPTIONS=" + kIdentity.options + "\nCHANNELS=3\n\n";
+    overwrite(path_, old);
+    std::string e = errorOf([&] { CacheFile(path_, kIdentity); });
+    EXPECT_EQ(e, "cache file " + path_ + " was made by an earlier Brume (cache format 1, whose records have no "
+                 "instant); remove it or use another -af file");
+    EXPECT_EQ(contents(path_), old);
 }
 
 TEST_F(CacheFileTest, RefusesAFileThatIsNotACache) {
@@ -187,13 +200,14 @@ TEST_F(CacheFileTest, AFlippedByteIsReportedWithItsBlocksOffset) {
 
 // Replaces the first record of the file's first block by `r`, with checksums that match: a record no
 // checksum catches, written by a faulty writer.
-void plantRecord(const std::string& path, size_t blockStart, const IrradianceRecord& r) {
+void plantRecord(const std::string& path, size_t blockStart, const SurfaceRecord& r) {
     std::string bytes = contents(path);
     char* p = bytes.data() + blockStart + kHeadSize;
     std::memcpy(p, &r.point, 24);
     std::memcpy(p + 24, &r.normal, 24);
     std::memcpy(p + 48, &r.axis, 24);
-    std::memcpy(p + 72, r.radius, 8);
+    std::memcpy(p + 72, &r.time, 8);
+    std::memcpy(p + 80, r.radius, 8);
     uint32_t count;
     std::memcpy(&count, bytes.data() + blockStart + 4, 4);
     auto crc = [](const char* data, size_t size) { return uint32_t(crc32(0, (const Bytef*)data, uInt(size))); };
@@ -206,7 +220,7 @@ void plantRecord(const std::string& path, size_t blockStart, const IrradianceRec
 
 TEST_F(CacheFileTest, AnInvalidRecordInTheFileIsCorruptionNotAValue) {
     size_t start = writeBlocks({2})[0];
-    IrradianceRecord bad = record(0);
+    SurfaceRecord bad = record(0);
     bad.normal *= 2;
     plantRecord(path_, start, bad);
     std::string e = errorOf([&] { CacheFile(path_, kIdentity).readNew(); });
@@ -222,10 +236,10 @@ TEST_F(CacheFileTest, AnInvalidRecordInTheFileIsCorruptionNotAValue) {
 
 TEST_F(CacheFileTest, InvalidRecordsAreNeverWritten) {
     CacheFile file(path_, kIdentity);
-    IrradianceRecord nan = record(1), flat = record(2), mono = record(3, 1);
+    SurfaceRecord nan = record(1), flat = record(2), mono = record(3, 1);
     nan.values[4] = std::nanf("");
     flat.radius[0] = 0;
-    for (const IrradianceRecord& r : {nan, flat, mono})
+    for (const SurfaceRecord& r : {nan, flat, mono})
         EXPECT_THROW(file.append({record(0), r}), std::invalid_argument);
     EXPECT_TRUE(CacheFile(path_, kIdentity).readNew().empty());
 }
@@ -235,7 +249,7 @@ constexpr int kPerBlock = 3;
 
 void expectEveryRecordOnce(const std::string& path, int writers, int blocks) {
     std::map<double, int> seen;
-    for (const IrradianceRecord& r : CacheFile(path, kIdentity).readNew()) ++seen[r.point.x];
+    for (const SurfaceRecord& r : CacheFile(path, kIdentity).readNew()) ++seen[r.point.x];
     ASSERT_EQ(seen.size(), size_t(writers * blocks * kPerBlock));
     for (auto [id, times] : seen) {
         EXPECT_EQ(times, 1) << id;
@@ -320,7 +334,7 @@ TEST_F(CacheFileTest, DamagedFilesLoadOrFailCleanly) {
         overwrite(path_, damaged);
         try {
             CacheFile file(path_, kIdentity);
-            for (const IrradianceRecord& r : file.readNew())
+            for (const SurfaceRecord& r : file.readNew())
                 ASSERT_TRUE(std::isfinite(r.point.x) && r.radius[0] > 0 && r.values.size() == 15u);
             file.append(records(100, 1));
             CacheFile(path_, kIdentity).readNew();

@@ -145,7 +145,7 @@ dvec3 world(const HemisphereSamples& hs, const Tangent& t) { return t.x * hs.fra
 
 // Shortens each axis until the extrapolation to its ends and the point sources' prediction there agree.
 void shortenToAgree(const HemisphereSamples& hs, double e, const dvec3& gradient, double epsilon, double smallest,
-                    IrradianceRecord& r) {
+                    SurfaceRecord& r) {
     const dvec3 axes[2] = {r.axis, r.axis2()};
     for (int k = 0; k < 2; ++k) {
         for (int step = 0; step < 12 && r.radius[k] > smallest; ++step) {
@@ -165,9 +165,9 @@ void shortenToAgree(const HemisphereSamples& hs, double e, const dvec3& gradient
 
 double RecordShape::maxAngle() const { return 10 * kPi / 180 + accuracy; }
 
-IrradianceRecord buildRecord(const HemisphereSamples& hs, const RecordShape& shape, int level) {
+SurfaceRecord buildRecord(const HemisphereSamples& hs, const RecordShape& shape, int level) {
     Measured m = measure(hs);
-    IrradianceRecord r;
+    SurfaceRecord r;
     r.point = hs.point();
     r.normal = hs.frame().n;
     r.level = level;
@@ -211,11 +211,11 @@ IrradianceRecord buildRecord(const HemisphereSamples& hs, const RecordShape& sha
         tiltK1[c] = float(glm::dot(tilt, axes[0]));
         tiltK2[c] = float(glm::dot(tilt, axes[1]));
     }
-    r.setField(IrradianceRecord::kIrradiance, value);
-    r.setField(IrradianceRecord::kAlongK1, alongK1);
-    r.setField(IrradianceRecord::kAlongK2, alongK2);
-    r.setField(IrradianceRecord::kTiltK1, tiltK1);
-    r.setField(IrradianceRecord::kTiltK2, tiltK2);
+    r.setField(SurfaceRecord::kIrradiance, value);
+    r.setField(SurfaceRecord::kAlongK1, alongK1);
+    r.setField(SurfaceRecord::kAlongK2, alongK2);
+    r.setField(SurfaceRecord::kTiltK1, tiltK1);
+    r.setField(SurfaceRecord::kTiltK2, tiltK2);
     return r;
 }
 

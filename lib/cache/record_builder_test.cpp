@@ -53,10 +53,10 @@ TEST(RecordBuilder, UniformSkyGivesPiLAndTheLargestZone) {
     auto hs = sample(dvec3(0), dvec3(0, 0, 1), 1024, [](const dvec3&, const dvec3&) {
         return std::pair{2.0, std::numeric_limits<double>::infinity()};
     });
-    IrradianceRecord r = buildRecord(hs, shape(), 0);
-    EXPECT_NEAR(r.value(IrradianceRecord::kIrradiance, 0), 2 * pi, 1e-4);
-    EXPECT_NEAR(r.value(IrradianceRecord::kAlongK1, 0), 0, 1e-6);
-    EXPECT_NEAR(r.value(IrradianceRecord::kAlongK2, 0), 0, 1e-6);
+    SurfaceRecord r = buildRecord(hs, shape(), 0);
+    EXPECT_NEAR(r.value(SurfaceRecord::kIrradiance, 0), 2 * pi, 1e-4);
+    EXPECT_NEAR(r.value(SurfaceRecord::kAlongK1, 0), 0, 1e-6);
+    EXPECT_NEAR(r.value(SurfaceRecord::kAlongK2, 0), 0, 1e-6);
     EXPECT_FLOAT_EQ(r.radius[0], 10);
     EXPECT_FLOAT_EQ(r.radius[1], 10);
     EXPECT_EQ(r.channels(), 3);
@@ -67,10 +67,10 @@ TEST(RecordBuilder, UniformSkyGivesPiLAndTheLargestZone) {
 TEST(RecordBuilder, TranslationalGradientMatchesAHalfLitCeiling) {
     const double h = 2;
     auto hs = sample(dvec3(0), dvec3(0, 0, 1), 2048, halfLitCeiling(h));
-    IrradianceRecord r = buildRecord(hs, shape(), 0);
-    EXPECT_NEAR(r.value(IrradianceRecord::kIrradiance, 0), pi / 2, 0.02 * pi / 2);
-    dvec3 gradient = double(r.value(IrradianceRecord::kAlongK1, 0)) * r.axis +
-                     double(r.value(IrradianceRecord::kAlongK2, 0)) * r.axis2();
+    SurfaceRecord r = buildRecord(hs, shape(), 0);
+    EXPECT_NEAR(r.value(SurfaceRecord::kIrradiance, 0), pi / 2, 0.02 * pi / 2);
+    dvec3 gradient = double(r.value(SurfaceRecord::kAlongK1, 0)) * r.axis +
+                     double(r.value(SurfaceRecord::kAlongK2, 0)) * r.axis2();
     EXPECT_NEAR(gradient.x, pi / (2 * h), 0.08 * pi / (2 * h));
     EXPECT_NEAR(gradient.y, 0, 0.05 * pi / (2 * h));
     // The zone is shortest across the edge (within 45°: the curvature bound does not see the edge itself).
@@ -84,9 +84,9 @@ TEST(RecordBuilder, RotationalGradientMatchesALinearSky) {
     auto hs = sample(dvec3(0), dvec3(0, 0, 1), 2048, [](const dvec3&, const dvec3& dir) {
         return std::pair{1 + dir.x, std::numeric_limits<double>::infinity()};
     });
-    IrradianceRecord r = buildRecord(hs, shape(), 0);
-    dvec3 tilt = double(r.value(IrradianceRecord::kTiltK1, 0)) * r.axis +
-                 double(r.value(IrradianceRecord::kTiltK2, 0)) * r.axis2();
+    SurfaceRecord r = buildRecord(hs, shape(), 0);
+    dvec3 tilt = double(r.value(SurfaceRecord::kTiltK1, 0)) * r.axis +
+                 double(r.value(SurfaceRecord::kTiltK2, 0)) * r.axis2();
     EXPECT_NEAR(tilt.x, 2 * pi / 3, 0.05 * 2 * pi / 3);
     EXPECT_NEAR(tilt.y, 0, 0.05 * 2 * pi / 3);
 }
@@ -104,14 +104,14 @@ TEST(RecordBuilder, ZonesScaleWithTheDistanceToSurroundingSurfaces) {
         };
     };
     for (auto kind : {RecordShape::Kind::Adaptive, RecordShape::Kind::Classic}) {
-        IrradianceRecord small = buildRecord(sample(dvec3(0), dvec3(0, 0, 1), 512, box(1)), shape(kind), 0);
-        IrradianceRecord large = buildRecord(sample(dvec3(0), dvec3(0, 0, 1), 512, box(2)), shape(kind), 0);
+        SurfaceRecord small = buildRecord(sample(dvec3(0), dvec3(0, 0, 1), 512, box(1)), shape(kind), 0);
+        SurfaceRecord large = buildRecord(sample(dvec3(0), dvec3(0, 0, 1), 512, box(2)), shape(kind), 0);
         EXPECT_NEAR(large.radius[0] / small.radius[0], 2, 0.02);
         EXPECT_NEAR(large.radius[1] / small.radius[1], 2, 0.02);
     }
     // Classic: ε times the harmonic mean distance, a circle.
     auto hs = sample(dvec3(0), dvec3(0, 0, 1), 512, box(1));
-    IrradianceRecord classic = buildRecord(hs, shape(RecordShape::Kind::Classic), 0);
+    SurfaceRecord classic = buildRecord(hs, shape(RecordShape::Kind::Classic), 0);
     double inverse = 0;
     for (int i = 0; i < hs.count(); ++i) inverse += 1 / hs.distance(i);
     EXPECT_NEAR(classic.radius[0], 0.1 * hs.count() / inverse, 1e-5);
@@ -126,7 +126,7 @@ TEST(RecordBuilder, ZonesShortenWhereTheEquivalentSourcesDisagree) {
         bool lit = std::abs(hit.x - 0.4) < 0.1 && std::abs(hit.y) < 0.1;
         return {lit ? 50.0 : 0.2, t};
     };
-    IrradianceRecord r = buildRecord(sample(dvec3(0), dvec3(0, 0, 1), 2048, lampNear), shape(), 0);
+    SurfaceRecord r = buildRecord(sample(dvec3(0), dvec3(0, 0, 1), 2048, lampNear), shape(), 0);
     EXPECT_LT(r.radius[0], 0.3);  // well under the distance to the patch's edge
     EXPECT_GT(r.radius[0], 0);
 }

@@ -1,7 +1,6 @@
 // How the cache shapes its records' zones: Brume's adaptive records, or the classic Ward–Heckbert records
 // kept as a baseline for benchmarks. Everything else (sampling, gradients, lookup, files) is shared.
 #pragma once
-#include <glm/vec3.hpp>
 
 namespace brume {
 
@@ -11,9 +10,6 @@ struct RecordShape {
     // Radiance's bounds on a record's radius before its -aa scaling: the scene's size / -ar, and 64 times
     // that (at most a fifth of the scene).
     double minRadius = 0.01, maxRadius = 1;
-    // Where the cache's float index and its regions are measured from (the scene's origin): the same
-    // records wherever the model stands.
-    glm::dvec3 origin{0};
     // The largest angle between a record's normal and a lookup's (Radiance: 10° + -aa radians).
     double maxAngle() const;
 };

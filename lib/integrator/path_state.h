@@ -1,11 +1,18 @@
-// The state a path carries from ray to ray, and the per-ray context, shared by the integrator's parts.
+// The state a path carries from ray to ray — how the ray was chosen (which decides how it counts the light
+// sources it meets), its bounces and weight, the closed volumes it is inside — and Russian roulette, which
+// decides whether a path goes on.
 #pragma once
 #include <algorithm>
 #include <numbers>
 
-#include "integrator/integrator.h"
+#include <glm/vec3.hpp>
+
+#include "sampling/random.h"
+#include "spectrum/spectrum.h"
 
 namespace brume {
+
+using glm::dvec3;
 
 namespace integrator_detail {
 constexpr double kPi = std::numbers::pi;
@@ -14,41 +21,8 @@ constexpr int kRouletteDepth = 64;    // past this many reflections roulette pla
 constexpr int kSafetyDepth = 200;     // roulette ends paths long before; this only bounds the stack
 constexpr double kDistantSourceDistance = 1e10;  // T of rays meeting sources at infinity (Radiance's FHUGE)
 
+// Veach's power heuristic (β = 2) for two strategies of densities a and b.
 inline double powerHeuristic(double a, double b) { return a * a / (a * a + b * b); }
-
-// The hit as a material sees it: the normal, perturbed (by mesh normals and a texture's `texture`), turned
-// toward the ray, and which side was hit.
-inline Shading shadingAt(const Ray& ray, const SurfaceHit& hit, bool flat, const ObjectFrame* object,
-                         const dvec3& texture = dvec3(0)) {
-    double along = glm::dot(hit.normal, ray.dir);
-    bool backside = along > 0;
-    Shading sh{hit.point, backside ? -hit.normal : hit.normal, ray.dir, std::abs(along), backside, flat, hit.t};
-    sh.object = object;
-    dvec3 perturbation = hit.perturbation + texture;
-    if (perturbation == dvec3(0)) return sh;
-    // Radiance's raynormal: the perturbed normal turns with the surface; where it would face away from the
-    // ray, it is mirrored across the plane normal to the ray; its cosine is kept at least 0.001.
-    dvec3 n = hit.normal + perturbation;
-    double len = glm::length(n);
-    if (!(len > 0) || !std::isfinite(len)) return sh;  // Radiance: "illegal normal perturbation", unperturbed
-    n = (backside ? -n : n) / len;
-    double cosine = -glm::dot(n, ray.dir);
-    if (cosine <= 0) {
-        n += 2 * cosine * ray.dir;
-        cosine = -cosine;
-    }
-    sh.normal = n;
-    sh.cosine = std::max(cosine, 0.001);
-    sh.flat = false;
-    return sh;
-}
-
-// The patterns' colour, and the texture's perturbation added to the hit's own (mesh normals), as Radiance's
-// raytexture adds to the ray's before raynormal.
-inline void applyTexturing(Shading& sh, const Texturing& t, const Ray& ray, const SurfaceHit& hit) {
-    if (glm::dot(t.perturbation, t.perturbation) > 1e-12) sh = shadingAt(ray, hit, false, sh.object, t.perturbation);
-    sh.pattern = t.color;
-}
 }  // namespace integrator_detail
 
 // Closed volumes (scene objects) a ray is inside, in the order it entered them: known from the boundaries it
@@ -68,8 +42,9 @@ struct InsideVolumes {
     }
 };
 
-// How the ray being traced was chosen, which decides how it counts the light sources it meets.
-struct Integrator::PathState {
+struct PathState {
+    // Primary: the ray whose value is asked for; Specular: a child of a specular lobe; Sampled: a ray drawn
+    // from a lobe (diffuse, glossy, a phase function), whose sources next-event estimation counted too.
     enum class Kind { Primary, Specular, Sampled } kind = Kind::Primary;
     int reflections = 0;   // for -lr
     int ambientLevel = 0;  // diffuse bounces so far, for -ab and -ad
@@ -87,21 +62,44 @@ struct Integrator::PathState {
     InsideVolumes clips, mists;
 };
 
-// What a work item or a record's computation learns from the irradiance cache: where records were missing.
-struct Integrator::CacheVisit {
-    bool waits = false;   // a work item waits for the records it misses (and runs again); records' rays do not
-    bool missed = false;  // it missed one
-    uint64_t key = 0;     // seeds the requests: key and count
-    uint64_t count = 0;
-    std::vector<RecordRequest> requests;
-};
+// Whether a path goes on past a scattering, and by how much its contribution grows if it does: Radiance's
+// -lr and -lw, without bias (Russian roulette where Radiance stops a path).
+class RussianRoulette {
+public:
+    RussianRoulette(int maxReflections, double minWeight) : maxReflections_(maxReflections), minWeight_(minWeight) {}
 
-struct Integrator::Context {
-    Random rng;
-    RayTree* tree = nullptr;
-    int depth = 0;  // of the ray being traced in its tree
-    CacheVisit* visit = nullptr;
-};
+    // The child of `parent` past a scattering of coefficient `coef` (a reflection or not, for -lr); false
+    // where the path ends. `boost` receives the inverse of the probability it went on. `byReflectance` plays
+    // roulette by the coefficient whatever -lr says (paths past -ab bounces).
+    bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Random& rng,
+               float& boost, bool byReflectance = false) const {
+        double w = std::min(1.0, double(coef.maxValue()));
+        child = parent;
+        child.weight = parent.weight * w;
+        child.reflections = parent.reflections + (reflection ? 1 : 0);
+        child.depth = parent.depth + 1;
+        child.viaMirror = -1;
+        boost = 1.f;
+        if (!(child.weight > 0) || child.depth > integrator_detail::kSafetyDepth) return false;
+        if (maxReflections_ > 0) return child.weight >= minWeight_ && child.reflections <= maxReflections_;
+        // Unbiased termination: below -lw by weight, past |lr| reflections by reflectance.
+        double survive = 1;
+        if (child.weight < minWeight_) survive = child.weight / minWeight_;
+        // (Also past kRouletteDepth with -lr 0, so a closed box of perfect mirrors still ends its paths.)
+        if (byReflectance || (maxReflections_ < 0 && child.reflections > -maxReflections_) ||
+            child.reflections > integrator_detail::kRouletteDepth)
+            survive *= std::min(0.95, w);
+        if (survive < 1) {
+            if (rng.uniform() >= survive) return false;
+            boost = float(1 / survive);
+            child.weight /= survive;
+        }
+        return true;
+    }
 
+private:
+    int maxReflections_;  // -lr: > 0 a hard limit; ≤ 0 roulette past |lr| reflections
+    double minWeight_;    // -lw
+};
 
 }  // namespace brume

@@ -177,4 +177,21 @@ void checkRenderSettings(const RenderSettings& s) {
         throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
 }
 
+std::string cacheOptions(const RenderSettings& settings) {
+    RenderSettings copy = settings;
+    bool irradianceAtHit = false;
+    OptionTable table;
+    addRenderOptions(table, copy, irradianceAtHit);
+    std::string text = "brume-" BRUME_VERSION;
+    for (const std::string& option : table.valueOptions()) {
+        // Which surface a value is asked for (-i), how samples are seeded (-u) and the instant (-T, which
+        // each record keeps) change no record.
+        if (option.rfind("-i", 0) == 0 || option.rfind("-u", 0) == 0 || option.rfind("-af", 0) == 0 ||
+            option.rfind("-T", 0) == 0)
+            continue;
+        text += " " + option;
+    }
+    return text;
+}
+
 }  // namespace brume

@@ -38,6 +38,10 @@ struct CommandLine {
 // stops; throws Error after the usage when no scene is named.
 std::optional<CommandLine> parseCommandLine(int argc, char** argv, const OptionTable& table, const ProgramOptions& options,
                                             const std::string& usage, const std::string& features);
+// Every option that changes cached values, as text (with Brume's version): a cache file made with other
+// options is refused. Not -T: records keep their own instant.
+std::string cacheOptions(const RenderSettings& settings);
+
 // Refuses settings that cannot work together.
 void checkRenderSettings(const RenderSettings& settings);
 

@@ -13,7 +13,7 @@
 namespace brume {
 
 struct RenderSettings {
-    int ambientBounces = 0;          // -ab: diffuse interreflections (past them: Integrator::bounceTail)
+    int ambientBounces = 0;          // -ab: diffuse interreflections (past them: bounceTail)
     bool ambientLimit = false;       // -al+: with the cache too, nothing past -ab bounces (Radiance's numbers)
     int ambientDivisions = 1024;     // -ad: paths per shading point at the first bounce
     int ambientSupersamples = 512;   // -as: Radiance's extra samples (Brume's records adapt otherwise: no effect)
@@ -43,6 +43,16 @@ struct RenderSettings {
     HomogeneousMedium medium;        // -me, -ma (RGB as given; the integrator lifts them to the bands), -mg
     double mediumSampling = 0;       // -ms: spacing of in-scattering samples along a ray (0: one per ray)
     int majorantCell = 8;            // -mc: smoke majorant cells, in voxels (0: one for the whole grid)
+
+    // Whether the irradiance cache is asked for: -ab, -aa and -ad positive.
+    bool usesCache() const { return ambientBounces > 0 && ambientAccuracy > 0 && ambientDivisions > 0; }
+    // With -aa > 0 (the irradiance cache) a Radiance user's typical call, -ab of a few bounces, means the
+    // light of every bounce: paths past the -ab-th go on by Russian roulette, unbiased, one path each (a
+    // decided difference: Radiance's cache stops there). -av gives them a value instead, and -al+ stops them
+    // as Radiance does, so that a study can be checked against Radiance's numbers.
+    bool bounceTail() const {
+        return ambientAccuracy > 0 && ambientBounces > 0 && ambientValue.isBlack() && !ambientLimit;
+    }
 };
 
 }  // namespace brume

@@ -55,7 +55,7 @@ InputRay inputRay(const std::array<double, 6>& r);
 constexpr size_t kRayBatchSize = 4096;  // rtrace's rays per batch when -x does not set it
 
 // rtrace's batches of rays: up to `size` rays, ending early after a flush request; at most `limit` rays in
-// all (0: until the end of input). The work of a batch is done in one Integrator::forEach, so programs that
+// all (0: until the end of input). The work of a batch is done in one Sequence::run, so programs that
 // batch alike (rtrace, mkcache) make the same irradiance cache records.
 class RayBatches {
 public:

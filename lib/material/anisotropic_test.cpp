@@ -35,7 +35,7 @@ TEST(AnisotropicMaterial, HighlightStretchesAlongTheSmootherDirection) {
         RenderSettings settings;
         settings.materials = traceNothing;
         Integrator integrator(s.render, settings);
-        return double(integrator.trace(-dir * 2.0, dir, 1).value[0]);
+        return double(test::trace(integrator, -dir * 2.0, dir, 1).value[0]);
     };
     dvec3 alongX = glm::normalize(dvec3(0.3, 0, -1)), alongY = glm::normalize(dvec3(0, 0.3, -1));
     EXPECT_GT(value("1 0 0", alongX), 3 * value("1 0 0", alongY));

@@ -38,7 +38,7 @@ TEST(FunctionBrdfMaterial, IndirectLightSeesTheReflectanceInTheMaterialsColour) 
     RenderSettings settings;
     settings.ambientValue = Spectrum(1.f);
     Integrator integrator(s.render, settings);
-    Spectrum v = integrator.trace(dvec3(0, 0, 1), dvec3(0, 0, -1), 1).value;
+    Spectrum v = test::trace(integrator, dvec3(0, 0, 1), dvec3(0, 0, -1), 1).value;
     EXPECT_NEAR(v[0], 0.5, 1e-6);
     EXPECT_NEAR(v[1], 0.25, 1e-6);
     EXPECT_NEAR(v[2], 1.0, 1e-6);

@@ -1,16 +1,28 @@
 // Light scattered at a point of a medium where media overlap (a homogeneous medium, smoke grids): a mixture of
 // Henyey–Greenstein lobes, each weighted by a coefficient per band (its scattering coefficient times whatever
-// the estimator carries). To the integrator it is a lobe like a surface's: next-event estimation asks its
-// response, sampled rays draw from it.
+// the estimator carries). Next-event estimation asks its response toward a source; sampled rays draw from it.
+//
+// Directions: `dir` is the direction of the ray that found the scattering point (the light scattered toward
+// its origin leaves along −dir); `wi` points toward where the light arrives from. The angle between the
+// directions light travels before and after scattering is that between wi and dir.
 #pragma once
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
-#include "material/material.h"
 #include "medium/henyey_greenstein.h"
+#include "spectrum/spectrum.h"
 
 namespace brume {
 
-class PhaseMixture : public GeneralLobe {
+// A direction drawn from a phase mixture: its weight is response/pdf.
+struct PhaseSample {
+    dvec3 wi;
+    Spectrum weight;
+    double pdf;  // solid-angle density
+};
+
+class PhaseMixture {
 public:
     static constexpr int kMaxComponents = 9;
 
@@ -28,29 +40,31 @@ public:
         return sum;
     }
 
-    // wi points toward where the light comes from; s.dir is the direction the light leaves in, reversed.
-    Spectrum response(const Shading& s, const dvec3& wi) const override {
-        double c = glm::dot(wi, s.dir);
+    // Σ coefficient × p(θ), per steradian.
+    Spectrum response(const dvec3& dir, const dvec3& wi) const {
+        double c = glm::dot(wi, dir);
         Spectrum f(0.f);
         for (int j = 0; j < count_; ++j) f += components_[j].coefficient * float(components_[j].phase.value(c));
         return f;
     }
-    double pdf(const Shading& s, const dvec3& wi) const override {
-        double c = glm::dot(wi, s.dir), p = 0;
+    // The density of sample()'s draws: the lobes' densities weighted by their shares.
+    double pdf(const dvec3& dir, const dvec3& wi) const {
+        double c = glm::dot(wi, dir), p = 0;
         for (int j = 0; j < count_; ++j) p += components_[j].share * components_[j].phase.value(c);
         return total_ > 0 ? p / total_ : 0;
     }
-    // One lobe chosen by its share, then its direction; weight = response / pdf of the whole mixture.
-    std::optional<LobeSample> sample(const Shading& s, double u, double v) const override {
+    // One lobe chosen by its share (by u, which is then reused), then its direction; weight = response / pdf
+    // of the whole mixture.
+    std::optional<PhaseSample> sample(const dvec3& dir, double u, double v) const {
         if (count_ == 0) return std::nullopt;
         double pick = u * total_;
         int j = 0;
         while (j + 1 < count_ && pick >= components_[j].share) pick -= components_[j++].share;
         double reused = std::clamp(pick / components_[j].share, 0.0, std::nextafter(1.0, 0.0));
-        dvec3 wi = components_[j].phase.sample(s.dir, reused, v);
-        double p = pdf(s, wi);
+        dvec3 wi = components_[j].phase.sample(dir, reused, v);
+        double p = pdf(dir, wi);
         if (!(p > 0)) return std::nullopt;
-        return LobeSample{wi, response(s, wi) * float(1 / p), p, true};
+        return PhaseSample{wi, response(dir, wi) * float(1 / p), p};
     }
 
 private:

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/progress.h"
+#include "render/sequence.h"
 #include "render/small_sources.h"
 #include "view/aperture.h"
 #include "view/pixel_aspect.h"
@@ -30,8 +31,9 @@ bool differ(const float* a, const float* b, double threshold) {
 
 class Renderer {
 public:
-    Renderer(const Integrator& integrator, const View& view, const PictureSettings& s, ProgressMeter* progress)
-        : integrator_(integrator), view_(view), s_(s), progress_(progress), w_(s.xres), h_(s.yres) {
+    Renderer(Sequence& sequence, const View& view, double time, const PictureSettings& s, ProgressMeter* progress)
+        : sequence_(sequence), integrator_(sequence.integrator()), view_(view), time_(time), s_(s), progress_(progress),
+          w_(s.xres), h_(s.yres) {
         values_.width = w_, values_.height = h_, values_.channels = c_;
         values_.values.assign(size_t(w_) * h_ * c_, 0.f);
         if (c_ > 3) colours_.assign(size_t(w_) * h_ * 3, 0.f);
@@ -47,7 +49,7 @@ public:
         if (adapt) adaptive();
         else traceAll();
         if (s_.drawSources && !s_.irradiance)
-            drawSmallSources(integrator_, view_, std::max(1, s_.sampleSpacing), values_, s_.depth ? &depth_ : nullptr);
+            drawSmallSources(integrator_, time_, view_, std::max(1, s_.sampleSpacing), values_, s_.depth ? &depth_ : nullptr);
         if (progress_) progress_->finish();
         RenderedPicture out;
         out.picture = picture();
@@ -80,7 +82,7 @@ private:
     }
 
     // One ray through pixel (x, row): its value and distance stored, the pixel marked traced.
-    void trace(int x, int row) {
+    void trace(int x, int row, WorkItem& item) {
         size_t i = at(x, row);
         uint64_t index = i;
         Random random(integrator_.seedFor(index) ^ 0x6a09e667f3bcc909ULL, index);  // this pixel's jitter and lens
@@ -92,9 +94,8 @@ private:
             !jitterAperture(view_, *ray, s_.aperture, random.uniform(), random.uniform(), random.uniform()))
             ray.reset();
         if (!ray) return;  // outside a fisheye's circle, or no lens ray: black, as Radiance
-        RayRecord rec = s_.irradiance
-                            ? integrator_.irradianceAtHit(ray->org, ray->dir, index)
-                            : integrator_.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);
+        RayQuery q{ray->org, ray->dir, index, time_, std::isfinite(ray->tmax) ? ray->tmax : 0};
+        RayRecord rec = s_.irradiance ? integrator_.irradianceAtHit(q, item) : integrator_.trace(q, item);
         for (int c = 0; c < c_; ++c) pixel(x, row)[c] = rec.value[c];
         if (c_ > 3) {
             Color3 rgb = toRgb(rec.value);
@@ -106,9 +107,9 @@ private:
         depth_[i] = std::isfinite(d) ? float(d) : 0.f;
     }
 
-    // Traces the pixels listed, by the integrator's passes (its cache's records are made between them).
+    // Traces the pixels listed, by the sequence's passes (its cache's records are made between them).
     void traceEach(const std::vector<std::pair<int, int>>& pixels) {
-        integrator_.forEach(pixels.size(), [&](size_t i) { trace(pixels[i].first, pixels[i].second); });
+        sequence_.run(pixels.size(), time_, [&](size_t i, WorkItem& item) { trace(pixels[i].first, pixels[i].second, item); });
     }
 
     // A band of rows at a time, for the progress report.
@@ -186,8 +187,10 @@ private:
         depth_[at(x, row)] = d;
     }
 
+    Sequence& sequence_;
     const Integrator& integrator_;
     const View& view_;
+    double time_;
     const PictureSettings& s_;
     ProgressMeter* progress_;
     static constexpr int kBand = 32;  // rows traced together
@@ -205,9 +208,9 @@ void fitResolution(const View& view, PictureSettings& s) {
     normalizeResolution(view.aspect(), s.pixelAspect, s.xres, s.yres);
 }
 
-RenderedPicture renderPicture(const Integrator& integrator, const View& view, const PictureSettings& settings,
+RenderedPicture renderPicture(Sequence& sequence, const View& view, double time, const PictureSettings& settings,
                               ProgressMeter* progress) {
-    return Renderer(integrator, view, settings, progress).run();
+    return Renderer(sequence, view, time, settings, progress).run();
 }
 
 }  // namespace brume

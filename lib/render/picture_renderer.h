@@ -14,6 +14,7 @@
 namespace brume {
 
 class ProgressMeter;
+class Sequence;
 
 struct PictureSettings {
     int xres = 512, yres = 512;     // -x -y: the largest resolution; one is reduced to fit the view's aspect
@@ -46,9 +47,10 @@ struct RenderedPicture {
 // The resolution and pixel aspect `settings` give for `view` (Radiance's normaspect).
 void fitResolution(const View& view, PictureSettings& settings);
 
-// Renders a valid `view`; `settings` must have been fitted. Progress counts pixels. Light sources too small
-// for the sampling are drawn in by their coverage of each pixel (small_sources.h).
-RenderedPicture renderPicture(const Integrator& integrator, const View& view, const PictureSettings& settings,
+// Renders a valid `view` at the scene's instant `time`, its pixels traced by the sequence's passes;
+// `settings` must have been fitted. Progress counts pixels. Light sources too small for the sampling are
+// drawn in by their coverage of each pixel (small_sources.h).
+RenderedPicture renderPicture(Sequence& sequence, const View& view, double time, const PictureSettings& settings,
                               ProgressMeter* progress = nullptr);
 
 }  // namespace brume

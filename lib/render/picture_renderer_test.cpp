@@ -1,4 +1,5 @@
 #include "render/picture_renderer.h"
+#include "render/sequence.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -64,17 +65,17 @@ TEST(PictureRenderer, FitsTheResolutionToTheViewAsRadiance) {
 TEST(PictureRenderer, APixelIsTheIntegratorsValueOnItsRay) {
     TestScene t(kRoom);
     RenderSettings s = fixedSeed();
-    Integrator integrator(t.render, s);
+    Sequence sequence(t.scene, t.render, s);
     View v = frontView();
     PictureSettings p = exact(13, 7);  // odd sizes: no symmetry hides a swapped axis
-    RenderedPicture r = renderPicture(integrator, v, p);
+    RenderedPicture r = renderPicture(sequence, v, 0, p);
     ASSERT_EQ(r.picture.width, 13);
     ASSERT_EQ(r.picture.height, 7);
     for (int row = 0; row < 7; ++row)
         for (int x = 0; x < 13; ++x) {
             auto ray = v.ray((x + 0.5) / 13, (7 - 1 - row + 0.5) / 7);
             ASSERT_TRUE(ray);
-            RayRecord rec = integrator.trace(ray->org, ray->dir, uint64_t(row) * 13 + x);
+            RayRecord rec = test::trace(sequence.integrator(), ray->org, ray->dir, uint64_t(row) * 13 + x);
             for (int c = 0; c < 3; ++c) EXPECT_EQ(r.picture.at(x, row)[c], rec.value[c]) << x << "," << row;
         }
 }
@@ -83,10 +84,10 @@ TEST(PictureRenderer, APixelIsTheIntegratorsValueOnItsRay) {
 // lower rows, and the left of the picture is the left of the view.
 TEST(PictureRenderer, RowsRunDownFromTheTop) {
     TestScene t(kRoom);
-    Integrator integrator(t.render, fixedSeed());
+    Sequence sequence(t.scene, t.render, fixedSeed());
     View v = frontView();
     v.vd = {0.25, 1, 0.6};  // looking up at the lamp, at x = 1: right of centre
-    RenderedPicture r = renderPicture(integrator, v, exact(32, 32));
+    RenderedPicture r = renderPicture(sequence, v, 0, exact(32, 32));
     int brightestX = 0, brightestRow = 0;
     for (int row = 0; row < 32; ++row)
         for (int x = 0; x < 32; ++x)
@@ -101,17 +102,17 @@ TEST(PictureRenderer, RowsRunDownFromTheTop) {
 // interpolated from them exactly; where they differ, pixels are traced, so they equal the fully traced ones.
 TEST(PictureRenderer, AdaptiveSamplingInterpolatesOnlyWhereSamplesAgree) {
     TestScene glow("void glow g 0 0 4 2 3 4 0\ng sphere sky 0 0 4 0 0 0 -100\n");
-    Integrator uniform(glow.render, fixedSeed());
+    Sequence uniform(glow.scene, glow.render, fixedSeed());
     PictureSettings p = exact(37, 23);
     p.sampleSpacing = 4;
-    RenderedPicture a = renderPicture(uniform, frontView(), p);
+    RenderedPicture a = renderPicture(uniform, frontView(), 0, p);
     for (int row = 0; row < 23; ++row)
         for (int x = 0; x < 37; ++x) EXPECT_FLOAT_EQ(a.picture.at(x, row)[1], 3.f);
 
     TestScene t(kRoom);
-    Integrator integrator(t.render, fixedSeed());
-    RenderedPicture full = renderPicture(integrator, frontView(), exact(37, 23));
-    RenderedPicture adaptive = renderPicture(integrator, frontView(), p);
+    Sequence sequence(t.scene, t.render, fixedSeed());
+    RenderedPicture full = renderPicture(sequence, frontView(), 0, exact(37, 23));
+    RenderedPicture adaptive = renderPicture(sequence, frontView(), 0, p);
     int same = 0;
     for (size_t i = 0; i < full.picture.pixels.size(); ++i) same += adaptive.picture.pixels[i] == full.picture.pixels[i];
     EXPECT_GT(same, int(full.picture.pixels.size() / 3));  // the edges and the ball's shading are traced
@@ -129,8 +130,8 @@ TEST(PictureRenderer, SamePictureOnAnyNumberOfThreads) {
     // Each with its own irradiance cache (a second picture by one integrator reuses the first's records).
     auto render = [&](int threads) {
         tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
-        Integrator integrator(t.render, s);
-        return renderPicture(integrator, frontView(), p).picture.pixels;
+        Sequence sequence(t.scene, t.render, s);
+        return renderPicture(sequence, frontView(), 0, p).picture.pixels;
     };
     EXPECT_EQ(render(1), render(2));
     s.ambientAccuracy = 0;  // path tracing
@@ -141,12 +142,12 @@ TEST(PictureRenderer, SamePictureOnAnyNumberOfThreads) {
 // depth is the distance to what a pixel sees.
 TEST(PictureRenderer, FisheyeCornersAreBlackAndDepthIsDistance) {
     TestScene glow("void glow g 0 0 4 1 1 1 0\ng sphere sky 0 0 4 0 0 0 -10\n");
-    Integrator integrator(glow.render, fixedSeed());
+    Sequence sequence(glow.scene, glow.render, fixedSeed());
     View v;
     v.type = kHemispherical, v.vh = v.vv = 180;
     PictureSettings p = exact(16, 16);
     p.depth = true;
-    RenderedPicture r = renderPicture(integrator, v, p);
+    RenderedPicture r = renderPicture(sequence, v, 0, p);
     EXPECT_EQ(r.picture.at(0, 0)[0], 0.f);
     EXPECT_EQ(r.picture.at(15, 15)[0], 0.f);
     EXPECT_FLOAT_EQ(r.picture.at(8, 8)[0], 1.f);

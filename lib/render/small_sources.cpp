@@ -94,8 +94,8 @@ Outline pixelOutline(const Light& light, const View& view, int w, int h) {
     return clipToBox(convexHull(points), 0, w, 0, h);
 }
 
-void drawSource(const Integrator& integrator, const Light& light, const View& view, const Outline& outline,
-                PixelSpectra& picture, std::vector<float>* depth) {
+void drawSource(const Integrator& integrator, WorkItem& item, double time, const Light& light, const View& view,
+                const Outline& outline, PixelSpectra& picture, std::vector<float>* depth) {
     int w = picture.width, h = picture.height;
     double x0 = w, x1 = 0, y0 = h, y1 = 0;
     for (const Point& p : outline) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
@@ -109,7 +109,8 @@ void drawSource(const Integrator& integrator, const Light& light, const View& vi
             int row = h - 1 - y;
             // Seeded apart from the picture's own pixels (whose indices run below w·h).
             uint64_t index = uint64_t(w) * h * (2 + uint64_t(light.object())) + uint64_t(row) * w + x;
-            RayRecord rec = integrator.trace(ray->org, ray->dir, index, std::isfinite(ray->tmax) ? ray->tmax : 0);
+            RayRecord rec =
+                integrator.trace({ray->org, ray->dir, index, time, std::isfinite(ray->tmax) ? ray->tmax : 0}, item);
             if (rec.surfaceObject != light.object() || !(brightness(rec.value) > 0)) continue;  // blocked, or dark here
             float* pixel = picture.at(x, row);
             size_t i = size_t(row) * w + x;
@@ -128,14 +129,16 @@ void drawSource(const Integrator& integrator, const Light& light, const View& vi
 
 }  // namespace
 
-void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, PixelSpectra& picture,
-                      std::vector<float>* depth) {
+void drawSmallSources(const Integrator& integrator, double time, const View& view, double widthLimit,
+                      PixelSpectra& picture, std::vector<float>* depth) {
+    Scratch scratch(integrator.scene());
+    WorkItem item{scratch};
     for (const Light& light : integrator.scene().lights()) {
         if (light.emitter().kind == Emitter::Kind::Illum) continue;
         if (light.isDistant() && view.type == kParallel) continue;  // a parallel view sees all of it or none
         Outline outline = pixelOutline(light, view, picture.width, picture.height);
         if (outline.size() < 3 || minimumWidth(outline) > widthLimit) continue;
-        drawSource(integrator, light, view, outline, picture, depth);
+        drawSource(integrator, item, time, light, view, outline, picture, depth);
     }
 }
 

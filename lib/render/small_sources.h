@@ -11,9 +11,10 @@
 
 namespace brume {
 
-// Draws the sources of the integrator's scene narrower than `widthLimit` pixels into `picture`, and their distance into `depth` where nearer, if given. A source is drawn where a ray through the
-// middle of its part of a pixel reaches it unobstructed. Illum sources (windows) are not drawn.
-void drawSmallSources(const Integrator& integrator, const View& view, double widthLimit, PixelSpectra& picture,
-                      std::vector<float>* depth);
+// Draws the sources of the integrator's scene narrower than `widthLimit` pixels into `picture` (at the scene's
+// instant `time`), and their distance into `depth` where nearer, if given. A source is drawn where a ray
+// through the middle of its part of a pixel reaches it unobstructed. Illum sources (windows) are not drawn.
+void drawSmallSources(const Integrator& integrator, double time, const View& view, double widthLimit,
+                      PixelSpectra& picture, std::vector<float>* depth);
 
 }  // namespace brume

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/picture_renderer.h"
+#include "render/sequence.h"
 #include "scene_text.h"
 
 using namespace brume;
@@ -53,12 +54,12 @@ TEST(SmallSources, ASourceSmallerThanAPixelGivesItsLightWherever) {
         double x = 0.07 + 0.0025 * k;  // across the centre of the pixel up and right of the axis, 0.48° off it
         TestScene t("void light lamp 0 0 3 1000 1000 1000\nlamp sphere bulb 0 0 4 " + std::to_string(x) + " " +
                     std::to_string(d) + " 0.0837 " + std::to_string(r) + "\n");
-        Integrator integrator(t.render, fixedSeed());
+        Sequence sequence(t.scene, t.render, fixedSeed());
         View v = lookingAt({0, 1, 0});
         p.drawSources = true;
-        EXPECT_NEAR(collected(renderPicture(integrator, v, p).picture, v), expected, 0.02 * expected) << k;
+        EXPECT_NEAR(collected(renderPicture(sequence, v, 0, p).picture, v), expected, 0.02 * expected) << k;
         p.drawSources = false;
-        double alone = collected(renderPicture(integrator, v, p).picture, v);
+        double alone = collected(renderPicture(sequence, v, 0, p).picture, v);
         EXPECT_TRUE(alone == 0 || alone > 20 * expected) << alone;  // all or nothing
         caught += alone > 0;
     }
@@ -70,30 +71,30 @@ TEST(SmallSources, ASourceSmallerThanAPixelGivesItsLightWherever) {
 TEST(SmallSources, APolygonSourceIsDrawnByItsCoverage) {
     TestScene t("void light lamp 0 0 3 500 500 500\n"
                 "lamp polygon tile 0 0 12 -0.013 8 -0.011 0.017 8 -0.011 0.017 8 0.019 -0.013 8 0.019\n");
-    Integrator integrator(t.render, fixedSeed());
+    Sequence sequence(t.scene, t.render, fixedSeed());
     View v = lookingAt({0, 1, 0});
     double expected = 500 * 0.03 * 0.03 / 64 * std::pow(1 + (0.002 * 0.002 + 0.004 * 0.004) / 64, -1.5);
-    EXPECT_NEAR(collected(renderPicture(integrator, v, every(32)).picture, v), expected, 0.005 * expected);
+    EXPECT_NEAR(collected(renderPicture(sequence, v, 0, every(32)).picture, v), expected, 0.005 * expected);
     PictureSettings coarse = every(8);
-    EXPECT_NEAR(collected(renderPicture(integrator, v, coarse).picture, v), expected, 0.005 * expected);
+    EXPECT_NEAR(collected(renderPicture(sequence, v, 0, coarse).picture, v), expected, 0.005 * expected);
 }
 
 // Something in front of the lamp hides it: nothing is drawn.
 TEST(SmallSources, HiddenSourcesAreNotDrawn) {
     TestScene t("void light lamp 0 0 3 1000 1000 1000\nlamp sphere bulb 0 0 4 0 10 0 0.01\n"
                 "void plastic black 0 0 5 0 0 0 0 0\nblack polygon wall 0 0 12 -1 5 -1 1 5 -1 1 5 1 -1 5 1\n");
-    Integrator integrator(t.render, fixedSeed());
+    Sequence sequence(t.scene, t.render, fixedSeed());
     View v = lookingAt({0, 1, 0});
-    EXPECT_EQ(collected(renderPicture(integrator, v, every(32)).picture, v), 0);
+    EXPECT_EQ(collected(renderPicture(sequence, v, 0, every(32)).picture, v), 0);
 }
 
 // A source wider than -ps pixels is left to the pixels' own rays.
 TEST(SmallSources, WideSourcesAreLeftToThePixels) {
     TestScene t("void light lamp 0 0 3 50 50 50\nlamp polygon panel 0 0 12 -1 8 -1 1 8 -1 1 8 1 -1 8 1\n");
-    Integrator integrator(t.render, fixedSeed());
+    Sequence sequence(t.scene, t.render, fixedSeed());
     View v = lookingAt({0, 1, 0});
     PictureSettings p = every(32);
-    RenderedPicture drawn = renderPicture(integrator, v, p);
+    RenderedPicture drawn = renderPicture(sequence, v, 0, p);
     p.drawSources = false;
-    EXPECT_EQ(drawn.picture.pixels, renderPicture(integrator, v, p).picture.pixels);
+    EXPECT_EQ(drawn.picture.pixels, renderPicture(sequence, v, 0, p).picture.pixels);
 }

@@ -21,7 +21,7 @@ inline bool exerciseCacheFile(std::string_view bytes) {
     bool valid = true;
     try {
         CacheFile file(path.string(), CacheIdentity{"fuzz", "fuzz", 3});
-        for (const IrradianceRecord& r : file.readNew()) {
+        for (const SurfaceRecord& r : file.readNew()) {
             valid = valid && r.channels() == 3 && r.radius[0] > 0 && r.radius[1] > 0 && r.level >= 0 &&
                     std::abs(glm::length(r.normal) - 1) < 1e-3;
             for (float v : r.values) valid = valid && std::isfinite(v);

@@ -45,15 +45,16 @@ inline RenderSettings rayRoomSettings() {
 
 // Whether every value rtrace would write for `rays` is finite: "-ffd -odvVwWlLcpnNrxRX" and `mode` (0,
 // 'l' for -ld, 'I' or 'i').
-inline bool answersAreFinite(const Integrator& integrator, const std::vector<InputRay>& rays, uint64_t first,
-                             char mode) {
+inline bool answersAreFinite(Sequence& sequence, const std::vector<InputRay>& rays, uint64_t first, char mode) {
     std::vector<RayRecord> records(rays.size());
-    integrator.forEach(rays.size(), [&](size_t i) {
+    const Integrator& integrator = sequence.integrator();
+    sequence.run(rays.size(), 0, [&](size_t i, WorkItem& item) {
         const InputRay& in = rays[i];
         if (in.zero) return;
-        if (mode == 'I') records[i] = integrator.irradiance(in.org, in.dir, first + i);
-        else if (mode == 'i') records[i] = integrator.irradianceAtHit(in.org, in.dir, first + i);
-        else records[i] = integrator.trace(in.org, in.dir, first + i, mode == 'l' ? in.maxDistance : 0);
+        RayQuery q{in.org, in.dir, first + i, 0, mode == 'l' ? in.maxDistance : 0};
+        if (mode == 'I') records[i] = integrator.irradiance(q, item);
+        else if (mode == 'i') records[i] = integrator.irradianceAtHit(q, item);
+        else records[i] = integrator.trace(q, item);
     });
     char* data = nullptr;
     size_t size = 0;
@@ -77,11 +78,11 @@ inline bool exerciseRays(std::string_view bytes) {
                       : "afd"[static_cast<unsigned char>(bytes[0]) % 3];
     RayReader reader(in, format, "(stdin)");
     RayBatches batches(reader, 64, 0);  // small batches: several cache passes in one input
-    Integrator integrator(rayRoom().render, rayRoomSettings());
+    Sequence sequence(rayRoom().scene, rayRoom().render, rayRoomSettings());
     try {
         for (std::vector<InputRay> rays; batches.next(rays);)
             for (char mode : {'\0', 'l', 'I', 'i'})
-                if (!answersAreFinite(integrator, rays, batches.first(), mode)) return false;
+                if (!answersAreFinite(sequence, rays, batches.first(), mode)) return false;
     } catch (const Error&) {
     }
     return true;

@@ -1,5 +1,7 @@
-// One record of the surface irradiance cache: the indirect irradiance measured at a point, how it changes
-// nearby, and the elliptic zone where it stands for its neighbours (../shared/design/METHOD.md §1).
+// One record of the surface irradiance cache: the indirect irradiance measured at a point of a surface at
+// one instant, how it changes nearby (Ward & Heckbert 1992's gradients, second order in rotation), and the
+// elliptic zone where it stands for its neighbours (Ribardière 2010's adaptive records: two tangent axes,
+// each with its own length).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -12,12 +14,13 @@ namespace brume {
 
 using glm::dvec3;
 
-struct IrradianceRecord {
+struct SurfaceRecord {
     dvec3 point{0};
     dvec3 normal{0, 0, 1};
     dvec3 axis{1, 0, 0};        // k1, a unit tangent; k2 = normal × k1
     float radius[2] = {0, 0};   // the zone's semi-axes along k1 and k2
     int level = 0;              // the diffuse bounce it was computed for (0: seen from a primary ray)
+    double time = 0;            // the scene's instant it holds the light of (s); moot where nothing changes in time
     // Per channel, in this order: irradiance E; its translational gradients along k1, k2 (per metre); its
     // rotational gradients as the normal tilts toward k1, k2 (per radian).
     std::vector<float> values;

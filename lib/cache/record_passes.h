@@ -1,0 +1,59 @@
+// Records made where lookups missed them, in an order fixed by the work, not by the threads. A loop over work
+// items (lib/render's Passes) runs them in passes against a store that does not change while a pass runs;
+// each item notes in its CacheVisit the records it missed; between passes, makeRecords makes the ones the
+// store accepts.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "cache/record_request.h"
+#include "sampling/random.h"
+
+namespace brume {
+
+// What one work item, or one record's own rays, learns from the cache: the records its lookups missed.
+struct CacheVisit {
+    bool waits = false;   // a work item waits for the records it misses (and runs again); records' rays do not
+    bool missed = false;  // it missed one it waits for
+    uint64_t key = 0;     // seeds the requests: key and count
+    uint64_t count = 0;
+    std::vector<RecordRequest> requests;
+
+    // Notes a lookup that found no record: a request for one there, seeded by the visit's key and count.
+    // True when the item waits for the record: what it computes now is moot, it runs again.
+    bool miss(const Receiver& at, const SurfaceId& leaving, float weight) {
+        requests.push_back({at, leaving, weight, mixBits(key + ++count)});
+        missed = missed || waits;
+        return waits;
+    }
+};
+
+// Makes the records `store` accepts of these requests (see RecordStore::accept; `missesToPay` tells what a
+// record is worth), kRecordsPerRound at a time on all threads: make(request, visit) computes one, noting in
+// `visit` (seeded by the request) what its own rays missed; those requests, of deeper bounces, are served
+// before the next round, so that later records use the records they bring.
+template <class Store, class Make>
+void makeRecords(Store& store, const std::vector<RecordRequest>& requests,
+                 const std::function<int(const RecordRequest&)>& missesToPay, const Make& make) {
+    constexpr size_t kRecordsPerRound = 64;  // made together; the next ones may use them
+    std::vector<RecordRequest> accepted = store.accept(requests, missesToPay);
+    for (size_t start = 0; start < accepted.size(); start += kRecordsPerRound) {
+        size_t n = std::min(kRecordsPerRound, accepted.size() - start);
+        std::vector<typename Store::Record> records(n);
+        std::vector<CacheVisit> visits(n);
+        tbb::parallel_for(size_t(0), n, [&](size_t i) {
+            visits[i].key = accepted[start + i].key;
+            records[i] = make(accepted[start + i], visits[i]);
+        });
+        store.insert(std::move(records));
+        std::vector<RecordRequest> deeper;
+        for (const CacheVisit& v : visits) deeper.insert(deeper.end(), v.requests.begin(), v.requests.end());
+        if (!deeper.empty()) makeRecords(store, deeper, missesToPay, make);
+    }
+}
+
+}  // namespace brume

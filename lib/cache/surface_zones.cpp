@@ -1,0 +1,88 @@
+#include "cache/surface_zones.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brume {
+
+SurfaceZones::SurfaceZones(const RecordShape& shape) : shape_(shape), cosMaxAngle_(std::cos(shape.maxAngle())) {}
+
+namespace {
+// Where p lies in the record's zone: 0 at its point, 1 on its edge (or beyond, or -1 far behind its plane:
+// a crease). Off the plane counts like distance along the short axis. Also p's coordinates along k1, k2.
+double zoneDistance(const SurfaceRecord& r, const dvec3& p, double& a, double& b) {
+    dvec3 delta = p - r.point;
+    double h = glm::dot(delta, r.normal);
+    if (h < -0.1 * r.radius[0]) return -1;
+    a = glm::dot(delta, r.axis), b = glm::dot(delta, r.axis2());
+    double qa = a / r.radius[0], qb = b / r.radius[1], qh = h / r.radius[0];
+    return std::sqrt(qa * qa + qb * qb + qh * qh);
+}
+}  // namespace
+
+double SurfaceZones::weigh(const SurfaceRecord& r, const Receiver& at, Spectrum* value) const {
+    const dvec3& n = *at.normal;
+    double cosAlpha = glm::dot(n, r.normal);
+    if (cosAlpha <= cosMaxAngle_) return 0;
+    double a = 0, b = 0, q = zoneDistance(r, at.point, a, b);
+    if (q < 0 || q >= 1) return 0;
+    double alpha = std::acos(std::min(1.0, cosAlpha));
+    double w = (q < 1e-6 ? 1e6 : 1 / q - 1) * (1 - alpha / shape_.maxAngle());
+    if (!(w > 0)) return 0;
+    if (value) {
+        dvec3 tilt = n - r.normal;
+        double t1 = glm::dot(tilt, r.axis), t2 = glm::dot(tilt, r.axis2());
+        bool secondOrder = shape_.kind == RecordShape::Kind::Adaptive;
+        const int ch = r.channels();
+        *value = Spectrum(0.f, ch);
+        for (int c = 0; c < ch; ++c) {
+            double e = r.value(SurfaceRecord::kIrradiance, c);
+            double change = r.value(SurfaceRecord::kAlongK1, c) * a + r.value(SurfaceRecord::kAlongK2, c) * b +
+                            r.value(SurfaceRecord::kTiltK1, c) * t1 + r.value(SurfaceRecord::kTiltK2, c) * t2;
+            if (secondOrder) change -= 0.5 * e * alpha * alpha;
+            (*value)[c] = float(e + std::clamp(change, -e, e));
+        }
+    }
+    return w;
+}
+
+// The zone is within the ellipsoid of semi-axes r0 (k1 and the normal) and r1 (k2): its box, widened for
+// the float rounding of coordinates far from the origin.
+ZoneBox SurfaceZones::box(const SurfaceRecord& r, const dvec3& origin) const {
+    dvec3 k1 = r.axis * double(r.radius[0]), k2 = r.axis2() * double(r.radius[1]), n = r.normal * double(r.radius[0]);
+    dvec3 p = r.point - origin;
+    dvec3 reach = glm::sqrt(k1 * k1 + k2 * k2 + n * n) * 1.001 + 1e-6 * glm::length(p);
+    ZoneBox b;
+    for (int k = 0; k < 3; ++k) b.lo[k] = float(p[k] - reach[k]), b.hi[k] = float(p[k] + reach[k]);
+    return b;
+}
+
+int SurfaceZones::facing(const Receiver& at) const {
+    const dvec3& n = *at.normal;
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+    return axis * 2 + (n[axis] < 0);
+}
+
+double SurfaceZones::sizeBeforeRecords() const {
+    return shape_.kind == RecordShape::Kind::Classic ? shape_.accuracy * shape_.maxRadius / 4 : shape_.maxRadius / 4;
+}
+
+void SurfaceZones::shrinkToExclude(SurfaceRecord& holder, const SurfaceRecord& other) const {
+    Spectrum value(0.f);
+    if (weigh(holder, Receiver{other.point, other.normal}, &value) <= 0) return;
+    double seen = brightness(value), actual = brightness(other.field(SurfaceRecord::kIrradiance));
+    double tolerance = 2 * shape_.accuracy;
+    if (std::abs(seen - actual) <= tolerance * std::max(seen, actual)) return;
+    double a, b;
+    float factor = float(std::max(0.5, 0.999 * zoneDistance(holder, other.point, a, b)));
+    holder.radius[0] *= factor, holder.radius[1] *= factor;
+}
+
+void SurfaceZones::reconcile(SurfaceRecord& fresh, SurfaceRecord& older) const {
+    shrinkToExclude(older, fresh);
+    shrinkToExclude(fresh, older);
+}
+
+}  // namespace brume

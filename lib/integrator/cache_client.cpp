@@ -1,0 +1,54 @@
+#include "integrator/cache_client.h"
+
+#include "cache/hemisphere_samples.h"
+#include "cache/record_builder.h"
+
+namespace brume {
+
+namespace {
+constexpr int kMinDivisions = 16;
+}
+
+bool CacheClient::irradiance(const Receiver& at, const SurfaceId& surface, float weight, PathContext& ctx,
+                             Spectrum& value) const {
+    if (!cache_ || !ctx.visit) return false;
+    if (cache_->lookup(at, value)) return true;
+    if (!ctx.visit->miss(at, surface, weight)) return false;
+    value = Spectrum(0.f);
+    return true;
+}
+
+int CacheClient::recordDivisions(const RecordRequest& request) const {
+    int ad = settings_.ambientDivisions;
+    if (request.at.level == 0) return ad;
+    return std::min(ad, std::max(kMinDivisions, int(ad * request.weight)));
+}
+
+SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+    RayOutputs outputs;
+    PathContext ctx{Random(seeds_.of(q.key), q.key), scratch, q.at.time, media_.smokeAt(q.at.time), &visit, &outputs};
+    const dvec3& point = q.at.point;
+    HemisphereSamples samples(point, *q.at.normal, recordDivisions(q), Spectrum::defaultChannels());
+    PathState child = shading_.startingAt(point, scratch);
+    child.kind = PathState::Kind::Sampled;
+    child.ambientLevel = q.at.level + 1;
+    child.reflections = q.at.level + 1;
+    child.weight = q.weight;
+    child.from = point;
+    child.fromWeight = q.weight;
+    child.depth = 1;
+    for (int j = 0; j < samples.rows(); ++j) {
+        for (int k = 0; k < samples.columns(); ++k) {
+            dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());
+            RayRecord hit;
+            Spectrum l = tracer_.radiance(Ray{point, dir, std::numeric_limits<double>::infinity(), q.leaving}, child,
+                                          ctx, nullptr, &hit);
+            samples.set(samples.cell(j, k), dir, l.clampFinite(), hit.firstLength);
+        }
+    }
+    SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
+    record.time = q.at.time;
+    return record;
+}
+
+}  // namespace brume

@@ -1,0 +1,55 @@
+// Next-event estimation: the light reaching a point straight from the sources, or through their images in
+// flat mirrors, along shadow rays that cross clear glass, antimatter and media — one routine for surface
+// and medium points (pbrt-v4's SampleLd), which weighs each source sample by the scatterer's response.
+#pragma once
+#include "integrator/hit_shading.h"
+#include "integrator/media.h"
+#include "integrator/path_context.h"
+#include "integrator/scatterer.h"
+#include "integrator/settings.h"
+#include "integrator/shadow_rays.h"
+
+namespace brume {
+
+class LightSampler {
+public:
+    LightSampler(const RenderScene& scene, const RenderSettings& settings, const HitShading& shading,
+                 const Media& media, const ShadowRays& shadowRays)
+        : scene_(scene), settings_(settings), shading_(shading), media_(media), shadowRays_(shadowRays) {}
+
+    // The sources' light scattered toward the viewer by `at` (leaving `surface`, none in a medium).
+    Spectrum sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
+
+    // A ray drawn from a lobe at `from` with density `pdf`, child of `parent`: it remembers how next-event
+    // estimation counted sources there, so that a source it meets takes only its share (misWeight).
+    void drawnFrom(PathState& child, const dvec3& from, double pdf, const PathState& parent) const;
+    // The multiple-importance weight of a source met by a drawn ray (power heuristic against next-event
+    // estimation's density × sample count at the ray's origin); `hit` on the source, null at infinity.
+    double misWeight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
+    // Whether next-event estimation reaches sources through mirror images (-dr > 0 and some flat mirror).
+    bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
+
+private:
+    double subdivision(const PathState& state) const;
+    bool exactDirect(const PathState& state) const { return state.depth == 0; }
+    int thresholdedCount(int count, double share) const;
+    bool samplesSource(const Light& light, const SurfaceId& surface) const;
+    std::optional<Spectrum> oneSourceOf(const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                                        PathContext& ctx) const;
+    Spectrum directFrom(const Light& light, double closedForm, double share, const Scatterer& at,
+                        const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
+    Spectrum directViaMirrors(const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                              PathContext& ctx) const;
+    const Spectrum& sourceRadiance(const Light& light, const LightSample& s, const dvec3& from, Spectrum& scratch,
+                                   PatternEvaluator& patterns) const;
+    void recordShadowRay(PathContext& ctx, const dvec3& from, const LightSample& s, const Light& light,
+                         const Spectrum& value) const;
+
+    const RenderScene& scene_;
+    const RenderSettings& settings_;
+    const HitShading& shading_;
+    const Media& media_;
+    const ShadowRays& shadowRays_;
+};
+
+}  // namespace brume

@@ -1,0 +1,62 @@
+#include "integrator/media.h"
+
+#include <stdexcept>
+
+#include "integrator/settings.h"
+#include "spectrum/rgb_to_spectrum.h"
+
+namespace brume {
+
+Media::Media(const RenderScene& scene, const RenderSettings& settings)
+    : scene_(scene), majorantCell_(settings.majorantCell) {
+    const HomogeneousMedium& m = settings.medium;
+    global_.extinction = spectrumFromRgb(m.extinction[0], m.extinction[1], m.extinction[2]);
+    global_.albedo = spectrumFromRgb(m.albedo[0], m.albedo[1], m.albedo[2]);
+    global_.g = m.g;
+    present_ = !global_.clear() || scene.hasMists() || !scene.smoke().empty();
+}
+
+void Media::prepare(double time) {
+    double key = scene_.variesInTime() ? time : 0.0;
+    if (instants_.count(key)) return;
+    std::vector<SmokeVolume> smoke;
+    for (const SmokeDescription& d : scene_.smoke()) smoke.emplace_back(d, time, majorantCell_);
+    instants_.emplace(key, ParticipatingMedia(std::move(smoke)));
+}
+
+void Media::keepOnly(double time) {
+    if (scene_.variesInTime()) std::erase_if(instants_, [&](const auto& entry) { return entry.first != time; });
+}
+
+const ParticipatingMedia& Media::smokeAt(double time) const {
+    auto it = instants_.find(scene_.variesInTime() ? time : 0.0);
+    if (it == instants_.end()) throw std::logic_error("the smoke at an instant not prepared");
+    return it->second;
+}
+
+HomogeneousMedium Media::homogeneousAlong(const Ray& ray, const SurfaceHit* hit, const PathState& state) const {
+    HomogeneousMedium h = global_;
+    for (int i = 0; i < state.mists.count; ++i) h = scene_.mist(state.mists.objects[i])->inside(h);
+    if (!hit || !scene_.hasMists()) return h;
+    int material = scene_.materialObject(hit->surface);
+    const Mist* mist = material >= 0 ? scene_.mist(material) : nullptr;
+    if (mist && glm::dot(hit->normal, ray.dir) > 0 && !state.mists.contains(material)) h = mist->inside(h);
+    return h;
+}
+
+Spectrum Media::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                              const ParticipatingMedia& smoke, Random& rng) const {
+    Spectrum t = h.transmittance(end - start);
+    return t.isBlack() || !smoke.hasSmoke() ? t : t * smoke.smokeTransmittance(ray, start, end, rng);
+}
+
+bool Media::attenuates(const Ray& ray, double distance, const PathState& state, const ParticipatingMedia& smoke) const {
+    return present_ && (!homogeneousAlong(ray, nullptr, state).clear() || smoke.smokeAlong(ray, 0, distance));
+}
+
+Spectrum Media::clearTransmittance(const Ray& ray, double distance, const PathState& state,
+                                   const ParticipatingMedia& smoke, Random& rng) const {
+    return transmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state), smoke, rng);
+}
+
+}  // namespace brume

@@ -1,0 +1,39 @@
+// Light along rays through participating media: attenuation, and light scattered toward the ray by the
+// media it crosses, by null-collision tracking through the homogeneous medium and the smoke together.
+// Rays whose value is the answer (primary rays and their specular children) see what lies behind the
+// medium weighted by its transmittance and in-scattering at points forced into the medium; rays averaged
+// with many others (diffuse and sampled ones) take delta tracking's first collision or the surface behind.
+#pragma once
+#include "integrator/light_sampler.h"
+#include "integrator/media.h"
+#include "integrator/tracer.h"
+
+namespace brume {
+
+class MediaTransport {
+public:
+    MediaTransport(const RenderScene& scene, const RenderSettings& settings, const Media& media,
+                   const LightSampler& lights, const Tracer& tracer, const RussianRoulette& roulette)
+        : scene_(scene), settings_(settings), media_(media), lights_(lights), tracer_(tracer), roulette_(roulette) {}
+
+    // The radiance along a ray that crosses media (`h` the homogeneous one along it) to `hit`, or past every
+    // surface: what lies behind them as they let it through, and what they scatter and emit toward the ray.
+    Spectrum along(const Ray& ray, const std::optional<SurfaceHit>& hit, const HomogeneousMedium& h,
+                   const PathState& state, PathContext& ctx, Spectrum* sourceShare) const;
+
+private:
+    Spectrum inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h, const PathState& state,
+                         PathContext& ctx) const;
+    Spectrum scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
+                       PathContext& ctx) const;
+    int inScatteringSamples(double length) const;
+
+    const RenderScene& scene_;
+    const RenderSettings& settings_;
+    const Media& media_;
+    const LightSampler& lights_;
+    const Tracer& tracer_;
+    const RussianRoulette& roulette_;
+};
+
+}  // namespace brume

@@ -1,0 +1,81 @@
+#include "integrator/ray_outputs.h"
+
+#include <cmath>
+
+namespace brume {
+
+RayOutputs::TreeRay::TreeRay(RayOutputs& outputs, const dvec3& org, const dvec3& dir)
+    : outputs_(outputs), org_(org), dir_(dir) {
+    own_.point = org;
+    scope_.emplace(outputs, outputs.record_ ? outputs.record_ : &own_);
+    ++outputs.depth_;
+}
+
+void RayOutputs::TreeRay::end(const Spectrum& value) {
+    --outputs_.depth_;
+    RayRecord& record = *outputs_.record_;
+    record.value = value;
+    outputs_.tree_->rays.push_back({outputs_.depth_, org_, dir_, record});
+}
+
+void RayOutputs::endSensor(const dvec3& point, const dvec3& dir, RayRecord& record, const Spectrum& value) {
+    if (!tree_) return;
+    record.value = value;
+    tree_->rays.push_back({0, point, dir, record});
+}
+
+void RayOutputs::hit(const SurfaceHit& hit, const dvec3& shadingNormal, int surfaceObject, int material) {
+    if (!record_) return;
+    record_->firstLength = record_->effectiveLength = hit.t;
+    record_->point = hit.point;
+    record_->normal = shadingNormal;
+    record_->surfaceNormal = hit.normal;
+    record_->uv = hit.uv;
+    record_->surfaceObject = surfaceObject;
+    record_->modifierObject = material;
+}
+
+void RayOutputs::distantSource(int object, int modifier, const dvec3& dir) {
+    if (!record_) return;
+    record_->surfaceObject = object;
+    record_->modifierObject = modifier;
+    record_->normal = record_->surfaceNormal = -dir;
+}
+
+void RayOutputs::passedThrough(const RayRecord& beyond) {
+    if (!record_) return;
+    double first = record_->firstLength;
+    *record_ = beyond;
+    record_->firstLength += first;
+    record_->effectiveLength += first;
+}
+
+void RayOutputs::specularPart(const Spectrum& part, bool reflection, const RayRecord& child, double& strongest) {
+    if (!record_) return;
+    double b = brightness(part);
+    if (reflection) {
+        record_->mirrored += part;
+        record_->mirroredLength = record_->firstLength + child.effectiveLength;
+    }
+    if (b > strongest) {
+        strongest = b;
+        record_->effectiveLength = record_->firstLength + child.effectiveLength;
+    }
+}
+
+void RayOutputs::shaded(const Spectrum& value, double strongest) {
+    if (record_ && brightness(value) > 0 && strongest < 0.5 * brightness(value))
+        record_->effectiveLength = record_->firstLength;
+}
+
+void RayOutputs::shadowRay(const dvec3& from, const LightSample& s, int object, int modifier, const Spectrum& value) {
+    RayRecord shadow;
+    shadow.value = value;
+    shadow.firstLength = shadow.effectiveLength = s.distance;
+    shadow.point = from + (std::isfinite(s.distance) ? s.distance : 0.0) * s.dir;
+    shadow.surfaceObject = object;
+    shadow.modifierObject = modifier;
+    tree_->rays.push_back({depth_, from, s.dir, shadow});
+}
+
+}  // namespace brume

@@ -1,0 +1,26 @@
+// One thread's working memory for the rays it traces, handed to each work item by the loop that runs them:
+// the state of pattern evaluation, where the last path started (and the mists around it), and arrays reused
+// from ray to ray so that shading allocates nothing.
+#pragma once
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "integrator/path_state.h"
+#include "pattern/pattern_evaluator.h"
+#include "world/render_scene.h"
+
+namespace brume {
+
+struct Scratch {
+    explicit Scratch(const RenderScene& scene) : patterns(scene.modifiers()) {}
+
+    PatternEvaluator patterns;
+    // The last point a path started from and the mists it lies in (a picture's eye is asked for every pixel).
+    std::optional<dvec3> lastStart;
+    InsideVolumes mistsAtLastStart;
+    std::vector<double> perSource;                               // next-event estimation's value per source
+    std::vector<std::pair<double, const Light*>> sourceGuesses;  // sources to draw distances toward in media
+};
+
+}  // namespace brume
