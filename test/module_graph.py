@@ -5,7 +5,7 @@
     python3 test/module_graph.py --graph [LIB_DIR]  # each module and the modules it includes, lowest first
 
 A module A depends on B when a file of A (tests beside the code left out: they may use anything) includes
-"B/...". Modules must form a directed graph without cycles (ARCHITECTURE: a type two modules need lives in
+"B/...". Modules must form a directed graph without cycles (a type two modules need lives in
 the lower one); a cycle is printed with one include that makes each of its edges.
 """
 import os

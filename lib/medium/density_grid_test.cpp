@@ -198,7 +198,7 @@ TEST(DensityGrid, HoudiniBoxWithBackgroundOneIsABoxOfDensityOne) {
     EXPECT_DOUBLE_EQ(box.density({0, 0, 0}), 1.0);
     EXPECT_EQ(box.density({0.6, 0, 0}), 0.0);
     EXPECT_EQ(box.density({5, 0, 0}), 0.0);
-    // σ_t = 1 per unit density: τ through the centre is the cell extent, 21 × 0.05 (SMOKE_FACTS-style check).
+    // σ_t = 1 per unit density: τ through the centre is the cell extent, 21 × 0.05.
     EXPECT_NEAR(opticalDepth(box, {-1, 0, 0}, {1, 0, 0}), 1.05, 1e-6);
 }
 

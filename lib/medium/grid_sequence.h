@@ -1,5 +1,5 @@
 // Smoke that evolves in time: density grids at key instants (a fire simulation's output frames), linearly
-// interpolated in between (METHOD.md §3: key and intermediate instants).
+// interpolated in between (Ribardière 2010: key and intermediate instants).
 #pragma once
 #include <vector>
 

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "sampling/spherical_triangle.h"
+#include "sampling/testing.h"
 
 using namespace brume;
+using namespace brume::sampling::testing;
 
 namespace {
 // A tilted 0.6 m × 0.3 m rectangle off to the side of the origin.
@@ -50,4 +52,29 @@ TEST(SphericalRectangle, SamplesLieOnItAndAreUniformInSolidAngle) {
     viaRectangle *= sr.solidAngle() / (n * n);
     viaTriangles /= n * n;
     EXPECT_NEAR(viaRectangle, viaTriangles, 1e-5 * viaTriangles);
+}
+
+// Draws are uniform in solid angle over the rectangle, 1/Ω where a ray meets it and nothing elsewhere
+// (chi-square over a cap about it, 2×10⁵ draws in 20×40 cells: 10% off over a tenth of it fails): seen from
+// near, from far, and from just above its plane, where the parametrisation's angles are most ill-conditioned.
+TEST(SphericalRectangle, DrawsAreUniformOverItsSolidAngle) {
+    Rectangle r = tilted();
+    dvec3 normal = glm::normalize(glm::cross(r.edgeX, r.edgeY));
+    auto hits = [&](const dvec3& eye, const dvec3& d) {
+        double t = glm::dot(r.corner - eye, normal) / glm::dot(d, normal);
+        dvec3 local = eye + t * d - r.corner;
+        double x = glm::dot(local, r.edgeX) / glm::dot(r.edgeX, r.edgeX),
+               y = glm::dot(local, r.edgeY) / glm::dot(r.edgeY, r.edgeY);
+        return t > 0 && x >= 0 && x <= 1 && y >= 0 && y <= 1;
+    };
+    dvec3 centre = r.corner + 0.5 * (r.edgeX + r.edgeY);
+    for (dvec3 eye : {dvec3(0), centre + 8.0 * normal + dvec3(1, 0, 0), centre + 0.02 * normal + 0.5 * r.edgeY}) {
+        SphericalRectangle sr(eye, r);
+        auto sample = [&](double u, double v) { return glm::normalize(sr.sample(u, v) - eye); };
+        auto density = [&](const dvec3& d) { return hits(eye, d) ? 1 / sr.solidAngle() : 0.0; };
+        std::vector<dvec3> corners{r.corner, r.corner + r.edgeX, r.corner + r.edgeX + r.edgeY, r.corner + r.edgeY};
+        SCOPED_TRACE(sr.solidAngle());
+        expectSamplesFollowDensity(sample, density,
+                                   capAround(eye, corners, {.draws = 200'000, .rings = 20, .sectors = 40}));
+    }
 }

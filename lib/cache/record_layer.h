@@ -1,0 +1,171 @@
+// The records of one kind at one instant: found by the zones that hold a receiver (an index of their boxes,
+// and the records added since it was built one by one), interpolated by their weights; the misses of
+// lookups counted in regions until they pay for a record; new records reconciled with the older ones.
+//
+// `Kind` (SurfaceZones) says how a record speaks for its neighbours: weigh(record, receiver, value*),
+// box(record, origin), reach(record), facing(receiver), size(record), sizeBeforeRecords(), reconcile(fresh,
+// older); and its Record type, with `point`, `level` and `values`.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "cache/record_request.h"
+#include "cache/zone_index.h"
+#include "spectrum/spectrum.h"
+
+namespace brume {
+
+template <class Kind>
+class RecordLayer {
+public:
+    using Record = typename Kind::Record;
+    // Level, facing, log2 of the size, and the region's coordinates.
+    using RegionKey = std::array<long long, 6>;
+
+    // Regions and the index are measured from `origin` (the scene's): the same records wherever the model
+    // stands. `kind` outlives the layer.
+    RecordLayer(const Kind& kind, const dvec3& origin) : kind_(kind), origin_(origin) {}
+    RecordLayer(const RecordLayer&) = delete;
+    RecordLayer& operator=(const RecordLayer&) = delete;
+
+    // The value at the receiver, interpolated between the records of its bounce or shallower ones whose
+    // zones hold it; false where there are none.
+    bool lookup(const Receiver& at, Spectrum& value) const {
+        double total = 0;
+        Spectrum sum(0.f), one(0.f);
+        forEachHolding(at.point, [&](size_t i) {
+            const Record& r = records_[i];
+            if (r.level > at.level) return;
+            double w = kind_.weigh(r, at, &one);
+            if (w <= 0) return;
+            sum += one * float(w);
+            total += w;
+        });
+        if (!(total > 0)) return false;
+        value = sum * float(1 / total);
+        return true;
+    }
+
+    // Counts a miss of request q in its region: the region's key once as many misses as its first request
+    // is worth (`missesToPay` of it) have come.
+    template <class Worth>
+    std::optional<RegionKey> countMiss(const RecordRequest& q, const Worth& missesToPay) {
+        double size = regionSize(q.at.level);
+        dvec3 p = q.at.point - origin_;
+        RegionKey key{q.at.level, kind_.facing(q.at), std::llround(std::log2(size)), regionIndex(p.x, size),
+                      regionIndex(p.y, size), regionIndex(p.z, size)};
+        Region& region = regions_[key];
+        if (region.misses++ == 0) region.first = q, region.order = requestsSeen_;
+        ++requestsSeen_;
+        if (region.misses == missesToPay(region.first)) return key;
+        return std::nullopt;
+    }
+    // The first request of a region that has paid (with when it came), unless a record made since covers
+    // its point; the region counts afresh after.
+    std::optional<std::pair<uint64_t, RecordRequest>> takeRegion(const RegionKey& key) {
+        auto it = regions_.find(key);
+        std::optional<std::pair<uint64_t, RecordRequest>> out;
+        Spectrum unused;
+        if (!lookup(it->second.first.at, unused)) out.emplace(it->second.order, it->second.first);
+        regions_.erase(it);
+        return out;
+    }
+
+    // Adds records in their order, each reconciled with the older ones of its bounce; `unsaved`: made here,
+    // to be handed to takeUnsaved.
+    void add(std::vector<Record> records, bool unsaved) {
+        size_t before = records_.size();
+        for (Record& r : records) {
+            if (sizes_.size() <= size_t(r.level)) sizes_.resize(r.level + 1);
+            sizes_[r.level].first += std::log(kind_.size(r));
+            ++sizes_[r.level].second;
+            if (unsaved) unsaved_.push_back(records_.size());
+            records_.push_back(std::move(r));
+            reconcile(records_.size() - 1);
+        }
+        size_t indexed = index_.size();
+        if (records_.size() - indexed <= std::max(kUnindexedLimit, indexed / 8) && before > 0) return;
+        boxes_.clear();
+        for (const Record& r : records_) boxes_.push_back(kind_.box(r, origin_));
+        index_.build(boxes_);
+    }
+    // Appends the records added as unsaved since the last call to `out`, in their order.
+    void takeUnsaved(std::vector<Record>& out) {
+        for (size_t i : unsaved_) out.push_back(records_[i]);
+        unsaved_.clear();
+    }
+
+    const std::vector<Record>& records() const { return records_; }
+    size_t memoryBytes() const {
+        size_t bytes = records_.capacity() * sizeof(Record) + regions_.size() * (sizeof(Region) + 64);
+        for (const Record& r : records_) bytes += r.values.capacity() * sizeof(float);
+        return bytes;
+    }
+
+private:
+    struct Region {
+        int misses = 0;
+        RecordRequest first;
+        uint64_t order = 0;  // when the first request arrived
+    };
+    // Records added since the index was built are looked at one by one; it is rebuilt when they are more
+    // than this, or an eighth of the indexed ones (so rebuilding costs a constant factor of the records' count).
+    static constexpr size_t kUnindexedLimit = 64;
+
+    // Calls f(i) for every record whose zone's box holds p.
+    template <class F>
+    void forEachHolding(const dvec3& p, F&& f) const {
+        index_.forEachHolding(p - origin_, f);
+        for (size_t i = index_.size(); i < records_.size(); ++i) {
+            dvec3 d = p - records_[i].point;
+            double reach = kind_.reach(records_[i]);
+            if (glm::dot(d, d) <= reach * reach) f(i);
+        }
+    }
+
+    void reconcile(size_t added) {
+        Record& fresh = records_[added];
+        forEachHolding(fresh.point, [&](size_t i) {
+            if (i == added || records_[i].level != fresh.level) return;
+            kind_.reconcile(fresh, records_[i]);
+        });
+    }
+
+    // Regions where misses are counted: cubes twice the typical record's size at that bounce (a power of
+    // two, so that they stay put while the typical size drifts).
+    double regionSize(int level) const {
+        double typical = kind_.sizeBeforeRecords();
+        if (size_t(level) < sizes_.size() && sizes_[level].second > 0)
+            typical = std::exp(sizes_[level].first / sizes_[level].second);
+        return std::exp2(std::round(std::log2(2 * typical)));
+    }
+
+    // The region of coordinate x along one axis, for regions `size` wide. Coordinates so far out that the
+    // index would not fit a long long (a sensor at 1e300) share the outermost region on their side:
+    // converting them unclamped is undefined, and on x86 put both sides in one region.
+    static long long regionIndex(double x, double size) {
+        constexpr double kOutermost = 0x1p62;
+        return (long long)std::clamp(std::floor(x / size), -kOutermost, kOutermost);
+    }
+
+    const Kind& kind_;
+    dvec3 origin_;
+    std::vector<Record> records_;
+    ZoneIndex index_;  // over the zones of records_[0, index_.size())
+    std::vector<ZoneBox> boxes_;
+    std::vector<size_t> unsaved_;
+    // Per bounce: the sum of the log sizes of its records and their count (their typical size sets the
+    // regions misses are counted in), and the misses counted per region.
+    std::vector<std::pair<double, int>> sizes_;
+    std::map<RegionKey, Region> regions_;
+    uint64_t requestsSeen_ = 0;
+};
+
+}  // namespace brume
