@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,9 +42,11 @@ public:
     std::vector<RecordRequest> accept(const std::vector<RecordRequest>& requests,
                                       const std::function<int(const RecordRequest&)>& missesToPay) {
         std::vector<std::pair<Layer*, typename Layer::RegionKey>> ready;
+        Layer* layer = nullptr;  // the last request's: requests come at one instant, mostly
+        double layerKey = 0;
         for (const RecordRequest& q : requests) {
-            Layer& layer = layerFor(q.at.time);
-            if (auto key = layer.countMiss(q, missesToPay)) ready.push_back({&layer, *key});
+            if (!layer || key(q.at.time) != layerKey) layer = &layerFor(q.at.time), layerKey = key(q.at.time);
+            if (auto region = layer->countMiss(q, missesToPay)) ready.push_back({layer, *region});
         }
         std::vector<std::pair<uint64_t, RecordRequest>> accepted;
         for (const auto& [layer, key] : ready)
@@ -61,7 +64,7 @@ public:
     // The records inserted (not insertSaved) since the last call, each instant's in their order.
     std::vector<Record> takeUnsaved() {
         std::vector<Record> out;
-        for (auto& [time, layer] : layers_) layer.takeUnsaved(out);
+        for (auto& [time, layer] : layers_) layer->takeUnsaved(out);
         return out;
     }
     // Forgets the records of every instant but `time` (a sequence that has moved on to it).
@@ -77,19 +80,19 @@ public:
     }
     size_t size() const {
         size_t n = 0;
-        for (const auto& [time, layer] : layers_) n += layer.records().size();
+        for (const auto& [time, layer] : layers_) n += layer->records().size();
         return n;
     }
     size_t memoryBytes() const {
         size_t bytes = 0;
-        for (const auto& [time, layer] : layers_) bytes += layer.memoryBytes();
+        for (const auto& [time, layer] : layers_) bytes += layer->memoryBytes();
         return bytes;
     }
     // "N records (bounce 0: n0, 1: n1, …), M MiB": for progress reports.
     std::string summary() const {
         std::vector<size_t> perLevel;
         for (const auto& [time, layer] : layers_)
-            for (const Record& r : layer.records()) {
+            for (const Record& r : layer->records()) {
                 if (perLevel.size() <= size_t(r.level)) perLevel.resize(r.level + 1);
                 ++perLevel[r.level];
             }
@@ -105,11 +108,16 @@ private:
     using Layer = RecordLayer<Kind>;
 
     double key(double time) const { return timed_ ? time : 0.0; }
+    // Few instants are in use at once (a sequence keeps one): a short list, searched from the front.
     const Layer* layerAt(double time) const {
-        auto it = layers_.find(key(time));
-        return it == layers_.end() ? nullptr : &it->second;
+        auto it = std::find_if(layers_.begin(), layers_.end(), [k = key(time)](const auto& e) { return e.first == k; });
+        return it == layers_.end() ? nullptr : it->second.get();
     }
-    Layer& layerFor(double time) { return layers_.try_emplace(key(time), kind_, origin_).first->second; }
+    Layer& layerFor(double time) {
+        auto it = std::find_if(layers_.begin(), layers_.end(), [k = key(time)](const auto& e) { return e.first == k; });
+        if (it != layers_.end()) return *it->second;
+        return *layers_.emplace_back(key(time), std::make_unique<Layer>(kind_, origin_)).second;
+    }
 
     void add(std::vector<Record> records, bool unsaved) {
         std::map<double, std::vector<Record>> byInstant;
@@ -120,7 +128,7 @@ private:
     Kind kind_;
     dvec3 origin_;
     bool timed_;
-    std::map<double, Layer> layers_;
+    std::vector<std::pair<double, std::unique_ptr<Layer>>> layers_;
 };
 
 }  // namespace brume

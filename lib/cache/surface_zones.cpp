@@ -57,14 +57,6 @@ ZoneBox SurfaceZones::box(const SurfaceRecord& r, const dvec3& origin) const {
     return b;
 }
 
-int SurfaceZones::facing(const Receiver& at) const {
-    const dvec3& n = *at.normal;
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-        if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
-    return axis * 2 + (n[axis] < 0);
-}
-
 double SurfaceZones::sizeBeforeRecords() const {
     return shape_.kind == RecordShape::Kind::Classic ? shape_.accuracy * shape_.maxRadius / 4 : shape_.maxRadius / 4;
 }

@@ -2,6 +2,9 @@
 // — an elliptic zone on its plane, normals within Radiance's 10° + -aa — with what weight and value, how its
 // zone is boxed for the index, and how two records that disagree shrink their zones.
 #pragma once
+#include <algorithm>
+#include <cmath>
+
 #include "cache/record_shape.h"
 #include "cache/surface_record.h"
 #include "cache/zone_index.h"
@@ -25,7 +28,13 @@ public:
     double reach(const SurfaceRecord& r) const { return std::max(r.radius[0], r.radius[1]); }
     // Misses are counted apart for receivers facing different ways: the dominant axis of the normal, and
     // its sign.
-    int facing(const Receiver& at) const;
+    int facing(const Receiver& at) const {
+        const dvec3& n = *at.normal;
+        int axis = 0;
+        for (int k = 1; k < 3; ++k)
+            if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+        return axis * 2 + (n[axis] < 0);
+    }
     // The size of a typical record (its short radius), and that assumed before any record is made.
     double size(const SurfaceRecord& r) const { return r.radius[0]; }
     double sizeBeforeRecords() const;

@@ -5,23 +5,14 @@
 
 namespace brume {
 
-namespace {
-constexpr int kMinDivisions = 16;
-}
-
-bool CacheClient::irradiance(const Receiver& at, const SurfaceId& surface, float weight, PathContext& ctx,
-                             Spectrum& value) const {
+bool CacheClient::irradiance(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
+                             PathContext& ctx, Spectrum& value) const {
     if (!cache_ || !ctx.visit) return false;
     if (cache_->lookup(at, value)) return true;
+    float weight = float(std::min(1.0, pathWeight * std::min(1.0, double(coef.maxValue()))));
     if (!ctx.visit->miss(at, surface, weight)) return false;
     value = Spectrum(0.f);
     return true;
-}
-
-int CacheClient::recordDivisions(const RecordRequest& request) const {
-    int ad = settings_.ambientDivisions;
-    if (request.at.level == 0) return ad;
-    return std::min(ad, std::max(kMinDivisions, int(ad * request.weight)));
 }
 
 SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {

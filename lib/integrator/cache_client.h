@@ -18,18 +18,33 @@ public:
 
     const SurfaceCache* cache() const { return cache_; }
     // The indirect irradiance at a diffuse shading point from the records (true). Where there is none, the
-    // work item's visit asks for one (a ray of weight `weight` missed it) and the path samples the light
-    // itself (false) — unless the item waits for the record: then true with 0, the item running again.
-    bool irradiance(const Receiver& at, const SurfaceId& surface, float weight, PathContext& ctx, Spectrum& value) const;
+    // work item's visit asks for one (missed by a ray of the path's weight times the lobe's coefficient
+    // `coef`) and the path samples the light itself (false) — unless the item waits for the record: then
+    // true with 0, the item running again.
+    bool irradiance(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
+                    PathContext& ctx, Spectrum& value) const;
 
-    // Radiance's -ad at the first bounce, scaled down by the looking ray's weight deeper in a path.
-    int recordDivisions(const RecordRequest& request) const;
+    // Radiance's -ad at the first bounce, scaled down by the looking ray's weight deeper in a path (at least
+    // kMinDivisions).
+    int recordDivisions(const RecordRequest& request) const {
+        int ad = settings_.ambientDivisions;
+        if (request.at.level == 0) return ad;
+        return std::min(ad, std::max(kMinDivisions, int(ad * request.weight)));
+    }
+    // How many lookups must miss a record before it is worth making: one at the first bounce (a primary ray's
+    // value waits for it); deeper, as many as its samples, so that a record costs no more than the paths it
+    // spares.
+    int missesToPay(const RecordRequest& request) const {
+        return request.at.level == 0 ? 1 : std::max(1, recordDivisions(request));
+    }
     // A record: the radiance of stratified rays over the hemisphere, each continuing one bounce deeper (where
     // the cache, or paths, give the light of further bounces). Sources these rays meet are left out: records
     // hold indirect light, next-event estimation gives the direct. Their own misses go to `visit`.
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
 private:
+    static constexpr int kMinDivisions = 16;
+
     const SurfaceCache* cache_;
     const RenderSettings& settings_;
     const Tracer& tracer_;

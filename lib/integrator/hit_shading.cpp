@@ -63,10 +63,6 @@ int HitShading::blend(const Ray& ray, const SurfaceHit& hit, PatternEvaluator& p
     return scene_.modifiers().resolveAll(scene_.surfaceModifier(hit.surface), patternHit(ray, hit), patterns, out);
 }
 
-PatternHit HitShading::patternHit(const Ray& ray, const SurfaceHit& hit) const {
-    return PatternHit{hit.point, ray.dir, hit.normal, hit.t, hit.uv.x, hit.uv.y, scene_.objectFrame(hit.surface)};
-}
-
 Spectrum HitShading::sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,
                                    double distance, PatternEvaluator& patterns) const {
     PatternHit hit{point, dir, normal, distance};

@@ -34,7 +34,9 @@ public:
     // A primary ray's hit on a surface whose mixtures blend (Radiance's raymixture): every material with its share.
     int blend(const Ray& ray, const SurfaceHit& hit, PatternEvaluator& patterns, ModifierChain::Branches& out) const;
     // The hit as patterns see it: in an instance or mesh, in its frame, with the mesh's (u, v).
-    PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) const;
+    PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) const {
+        return PatternHit{hit.point, ray.dir, hit.normal, hit.t, hit.uv.x, hit.uv.y, scene_.objectFrame(hit.surface)};
+    }
     // The colour of a source's patterns where a ray in direction `dir` meets it (e.g. a luminaire's intensity
     // distribution from ies2rad, or a sky's luminance distribution).
     Spectrum sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,

@@ -50,10 +50,6 @@ void Integrator::moveTo(double time) {
     media_.keepOnly(time);
 }
 
-int Integrator::missesToPay(const RecordRequest& q) const {
-    return q.at.level == 0 ? 1 : std::max(1, cache_.recordDivisions(q));
-}
-
 // Rays given on input may start exactly on a surface (a sensor on the floor); like Radiance, which ignores
 // hits closer than 1e-6, ignore those, but relative to the scene's size and the point's distance from the
 // scene's origin (sensor files round their coordinates), and beyond the double rounding of the point's
@@ -156,7 +152,9 @@ Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const 
 // The radiance along a ray; with a ray tree to fill, the ray is added after its children.
 Spectrum Integrator::radiance(const Ray& ray, const PathState& state, PathContext& ctx, Spectrum* sourceShare,
                               RayRecord* record) const {
-    if (!ctx.outputs) return radianceAlong(ray, state, ctx, sourceShare);
+    // Most rays: nobody asks for their outputs, nor for their parent's.
+    if (!ctx.outputs || (!record && !ctx.outputs->record() && !ctx.outputs->tree()))
+        return radianceAlong(ray, state, ctx, sourceShare);
     RayOutputs::Scope scope(*ctx.outputs, record);
     if (!ctx.outputs->tree()) return radianceAlong(ray, state, ctx, sourceShare);
     RayOutputs::TreeRay traced(*ctx.outputs, ray.org, ray.dir);
@@ -212,7 +210,7 @@ Spectrum Integrator::shadeHit(const Ray& ray, const SurfaceHit& hit, const Shadi
                               PathContext& ctx, Spectrum* sourceShare) const {
     if (PathState crossed = state; shading_.passes(mat, glm::dot(hit.normal, ray.dir) > 0, crossed))
         return passThrough(ray, hit, crossed, ctx, sourceShare);
-    if (ctx.outputs) ctx.outputs->hit(hit, sh.normal, scene_.surfaceObject(hit.surface), mat);
+    if (RayOutputs* out = ctx.recording()) out->hit(hit, sh.normal, scene_.surfaceObject(hit.surface), mat);
     if (const Emitter* e = scene_.emitter(mat)) return emitterHit(ray, hit, sh, *e, state, ctx, sourceShare);
     return scatterHit(ray, hit, sh, *scene_.material(mat), state, ctx, sourceShare);
 }
@@ -237,10 +235,10 @@ Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const Pa
     PathState next = state;
     ++next.depth;
     Ray on{hit.point, ray.dir, std::numeric_limits<double>::infinity(), hit.surface};
-    bool recorded = ctx.outputs && ctx.outputs->record();
+    RayOutputs* out = ctx.recording();
     RayRecord beyond;
-    Spectrum value = radiance(on, next, ctx, sourceShare, recorded ? &beyond : nullptr);
-    if (recorded) ctx.outputs->passedThrough(beyond);
+    Spectrum value = radiance(on, next, ctx, sourceShare, out ? &beyond : nullptr);
+    if (out) out->passedThrough(beyond);
     return value;
 }
 
@@ -267,7 +265,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, PathContext
                     return sampledSourceShare(emitted(), li, state, ray, nullptr, sourceShare);
                 continue;
             }
-            if (ctx.outputs) ctx.outputs->distantSource(light.object(), scene_.lightModifier(light), ray.dir);
+            if (RayOutputs* out = ctx.recording()) out->distantSource(light.object(), scene_.lightModifier(light), ray.dir);
             Spectrum le = emitted();
             if (glows) return le;
             if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image

@@ -58,7 +58,7 @@ public:
     RayRecord irradianceAtHit(const RayQuery& q, WorkItem& item, RayTree* tree = nullptr) const;
 
     // The cache's side of the record passes: what a missed record is worth, and a record.
-    int missesToPay(const RecordRequest& request) const;
+    int missesToPay(const RecordRequest& request) const { return cache_.missesToPay(request); }
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
         return cache_.makeRecord(request, scratch, visit);
     }

@@ -17,6 +17,9 @@ struct PathContext {
     const ParticipatingMedia& smoke;  // the smoke at that instant
     CacheVisit* visit = nullptr;      // null: no cache lookups (paths sample what records would give)
     RayOutputs* outputs = nullptr;    // null: nobody asks for rtrace's outputs
+
+    // The outputs, where the record of the ray being traced is asked for (else null).
+    RayOutputs* recording() const { return outputs && outputs->record() ? outputs : nullptr; }
 };
 
 // Seeds from the run's (fixed by -u-, else new each run): of the samples of work item `index`, and of the

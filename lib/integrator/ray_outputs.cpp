@@ -24,26 +24,13 @@ void RayOutputs::endSensor(const dvec3& point, const dvec3& dir, RayRecord& reco
     tree_->rays.push_back({0, point, dir, record});
 }
 
-void RayOutputs::hit(const SurfaceHit& hit, const dvec3& shadingNormal, int surfaceObject, int material) {
-    if (!record_) return;
-    record_->firstLength = record_->effectiveLength = hit.t;
-    record_->point = hit.point;
-    record_->normal = shadingNormal;
-    record_->surfaceNormal = hit.normal;
-    record_->uv = hit.uv;
-    record_->surfaceObject = surfaceObject;
-    record_->modifierObject = material;
-}
-
 void RayOutputs::distantSource(int object, int modifier, const dvec3& dir) {
-    if (!record_) return;
     record_->surfaceObject = object;
     record_->modifierObject = modifier;
     record_->normal = record_->surfaceNormal = -dir;
 }
 
 void RayOutputs::passedThrough(const RayRecord& beyond) {
-    if (!record_) return;
     double first = record_->firstLength;
     *record_ = beyond;
     record_->firstLength += first;
@@ -51,7 +38,6 @@ void RayOutputs::passedThrough(const RayRecord& beyond) {
 }
 
 void RayOutputs::specularPart(const Spectrum& part, bool reflection, const RayRecord& child, double& strongest) {
-    if (!record_) return;
     double b = brightness(part);
     if (reflection) {
         record_->mirrored += part;
@@ -61,11 +47,6 @@ void RayOutputs::specularPart(const Spectrum& part, bool reflection, const RayRe
         strongest = b;
         record_->effectiveLength = record_->firstLength + child.effectiveLength;
     }
-}
-
-void RayOutputs::shaded(const Spectrum& value, double strongest) {
-    if (record_ && brightness(value) > 0 && strongest < 0.5 * brightness(value))
-        record_->effectiveLength = record_->firstLength;
 }
 
 void RayOutputs::shadowRay(const dvec3& from, const LightSample& s, int object, int modifier, const Spectrum& value) {

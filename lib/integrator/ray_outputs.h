@@ -56,8 +56,17 @@ public:
     void beginSensor() { depth_ = tree_ ? 1 : 0; }
     void endSensor(const dvec3& point, const dvec3& dir, RayRecord& record, const Spectrum& value);
 
+    // What the transport says of the ray being traced, where its record is asked for (record() is set):
     // The ray met a surface, shaded by `material` (or an emitter).
-    void hit(const SurfaceHit& hit, const dvec3& shadingNormal, int surfaceObject, int material);
+    void hit(const SurfaceHit& hit, const dvec3& shadingNormal, int surfaceObject, int material) {
+        record_->firstLength = record_->effectiveLength = hit.t;
+        record_->point = hit.point;
+        record_->normal = shadingNormal;
+        record_->surfaceNormal = hit.normal;
+        record_->uv = hit.uv;
+        record_->surfaceObject = surfaceObject;
+        record_->modifierObject = material;
+    }
     // The ray met a source at infinity (named, facing the ray, at no distance).
     void distantSource(int object, int modifier, const dvec3& dir);
     // The ray went on through a surface that does not shade (antimatter, a mist's, a void or cut-away one):
@@ -68,7 +77,9 @@ public:
     void specularPart(const Spectrum& part, bool reflection, const RayRecord& child, double& strongest);
     // The ray's value at a shaded hit, once every lobe is in: where no specular part dominates (less than
     // half of it), the effective length is the first surface's.
-    void shaded(const Spectrum& value, double strongest);
+    void shaded(const Spectrum& value, double strongest) {
+        if (brightness(value) > 0 && strongest < 0.5 * brightness(value)) record_->effectiveLength = record_->firstLength;
+    }
     // With -oT: a shadow ray toward a source, and what it brought.
     bool wantsShadowRays() const { return tree_ && tree_->withShadowRays; }
     void shadowRay(const dvec3& from, const LightSample& s, int object, int modifier, const Spectrum& value);

@@ -6,11 +6,10 @@ namespace brume {
 
 using namespace integrator_detail;
 
-Spectrum Scatterer::response(const dvec3& l, double lightDensity, bool withDiffuse) const {
-    if (!phase_) return surfaceResponse(l, lightDensity, withDiffuse);
-    double w = phaseSampled_ && lightDensity > 0 ? powerHeuristic(lightDensity, phase_->pdf(dir_, l)) : 1.0;
+Spectrum Scatterer::phaseResponse(const dvec3& l, double lightDensity) const {
+    double w = phaseSampled_ && lightDensity > 0 ? powerHeuristic(lightDensity, phase_->pdf(*dir_, l)) : 1.0;
     Spectrum f(0.f);
-    f += phase_->response(dir_, l) * float(w);
+    f += phase_->response(*dir_, l) * float(w);
     return f;
 }
 

@@ -10,16 +10,17 @@
 
 namespace brume {
 
+// It refers to what it is made of, which outlives it (a light sample's call).
 class Scatterer {
 public:
     // At a surface hit.
-    Scatterer(const Shading& sh, const Lobes& lobes) : point_(sh.point), surface_(&sh), lobes_(&lobes) {}
+    Scatterer(const Shading& sh, const Lobes& lobes) : point_(&sh.point), surface_(&sh), lobes_(&lobes) {}
     // In a medium, at `point` on a ray of direction `dir`; `sampledByRays`: the phase functions are also
     // sampled by a ray there (which then takes its share of the sources' light by multiple importance).
     Scatterer(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, bool sampledByRays)
-        : point_(point), dir_(dir), phase_(&phase), phaseSampled_(sampledByRays) {}
+        : point_(&point), dir_(&dir), phase_(&phase), phaseSampled_(sampledByRays) {}
 
-    const dvec3& point() const { return point_; }
+    const dvec3& point() const { return *point_; }
     // The hit, at a surface; null in a medium.
     const Shading* surface() const { return surface_; }
 
@@ -41,15 +42,18 @@ public:
     // sampled by rays takes its power-heuristic share against the source's sampling density `lightDensity`;
     // lightDensity 0 gives every lobe all of it (sources no ray will count). Without `withDiffuse` the
     // Lambertian lobe is left out (next-event estimation has it in closed form).
-    Spectrum response(const dvec3& l, double lightDensity, bool withDiffuse = true) const;
+    Spectrum response(const dvec3& l, double lightDensity, bool withDiffuse = true) const {
+        return phase_ ? phaseResponse(l, lightDensity) : surfaceResponse(l, lightDensity, withDiffuse);
+    }
 
 private:
     Spectrum surfaceResponse(const dvec3& l, double lightDensity, bool withDiffuse) const;
+    Spectrum phaseResponse(const dvec3& l, double lightDensity) const;
 
-    dvec3 point_;
+    const dvec3* point_;
     const Shading* surface_ = nullptr;
     const Lobes* lobes_ = nullptr;
-    dvec3 dir_{0};
+    const dvec3* dir_ = nullptr;
     const PhaseMixture* phase_ = nullptr;
     bool phaseSampled_ = false;
 };

@@ -11,8 +11,7 @@ Spectrum SurfaceScattering::shade(const Shading& sh, const Lobes& lobes, const S
                                   const PathState& state, PathContext& ctx, Spectrum* sourceShare) const {
     Spectrum value(0.f);
     double strongest = 0;
-    RayOutputs* outputs = ctx.outputs;
-    bool recorded = outputs && outputs->record();
+    RayOutputs* recorded = ctx.recording();
     for (int k = 0; k < lobes.deltaCount; ++k) {
         const DeltaLobe& d = lobes.delta[k];
         PathState child;
@@ -33,7 +32,7 @@ Spectrum SurfaceScattering::shade(const Shading& sh, const Lobes& lobes, const S
         if (sourceShare && !share.isBlack()) *sourceShare += d.weight * share * boost;
         Spectrum part = d.weight * li * boost;
         value += part;
-        if (recorded) outputs->specularPart(part, !d.transmits, childRecord, strongest);
+        if (recorded) recorded->specularPart(part, !d.transmits, childRecord, strongest);
     }
     bool diffuseOrGlossy = !lobes.diffuse.isBlack() || !lobes.diffuseTrans.isBlack() || !lobes.glossy.isBlack() ||
                            !lobes.glossyTrans.isBlack() || lobes.general;
@@ -41,7 +40,7 @@ Spectrum SurfaceScattering::shade(const Shading& sh, const Lobes& lobes, const S
     if (lobes.sampleGlossy || lobes.sampleGlossyTrans) value += glossy(sh, lobes, surface, state, ctx);
     if (lobes.general && lobes.sampleGeneral) value += general(sh, *lobes.general, surface, state, ctx);
     value += ambient(sh, lobes, surface, state, ctx);
-    if (recorded) outputs->shaded(value, strongest);
+    if (recorded) recorded->shaded(value, strongest);
     return value.clampFinite();
 }
 
@@ -100,8 +99,8 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
         }
         dvec3 normal = transmit ? -sh.normal : sh.normal;
         Spectrum cached;
-        float weight = float(std::min(1.0, state.weight * std::min(1.0, double(coef.maxValue()))));
-        if (!beyond && cache_.irradiance(Receiver{sh.point, normal, state.ambientLevel, ctx.time}, surface, weight, ctx, cached)) {
+        if (!beyond && cache_.irradiance(Receiver{sh.point, normal, state.ambientLevel, ctx.time}, surface,
+                                         state.weight, coef, ctx, cached)) {
             sum += coef * cached * float(1 / kPi);
             continue;
         }
