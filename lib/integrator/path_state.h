@@ -70,7 +70,8 @@ public:
 
     // The child of `parent` past a scattering of coefficient `coef` (a reflection or not, for -lr); false
     // where the path ends. `boost` receives the inverse of the probability it went on. `byReflectance` plays
-    // roulette by the coefficient whatever -lr says (paths past -ab bounces).
+    // roulette by the coefficient (paths past -ab bounces) whatever a negative or zero -lr says; a positive
+    // -lr is a hard limit still.
     bool spawn(const PathState& parent, PathState& child, const Spectrum& coef, bool reflection, Random& rng,
                float& boost, bool byReflectance = false) const {
         double w = std::min(1.0, double(coef.maxValue()));

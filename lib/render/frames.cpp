@@ -24,10 +24,12 @@ Frames Frames::viewLines(std::istream& in, const View& start, int first, std::op
     return Frames([&in, last]() -> std::optional<SequenceFrame> {
         std::string line;
         while (std::getline(in, line)) {
-            if (!isViewLine(line) || parseViewString(last->view, line) == 0) continue;
+            if (!isViewLine(line)) continue;
+            bool moved = parseViewString(last->view, line) > 0;
             std::istringstream words(line);
             for (std::string w; words >> w;)
-                if (w == "-T" && words >> w) last->time = toReal("-T", w);
+                if (w == "-T" && words >> w) last->time = toReal("-T", w), moved = true;
+            if (!moved) continue;  // a line that moves nothing is no frame, as in Radiance
             ++last->number;
             return *last;
         }

@@ -20,8 +20,9 @@ struct SequenceFrame {
 class Frames {
 public:
     static Frames single(const View& view, std::optional<double> time);
-    // View lines read from `in` (lines that are not views are skipped), numbered from `first`; each changes
-    // the view before it, starting from `start`, and a -T on it changes the instant for it and those after.
+    // View lines read from `in` (lines that are not views, or move nothing, are skipped), numbered from
+    // `first`; each changes the view before it, starting from `start`, and a -T on it changes the instant for
+    // it and those after: a line moving only the instant is a frame.
     static Frames viewLines(std::istream& in, const View& start, int first, std::optional<double> time);
     // The frames of `path` at `fps` (0: one per key), its views completing `base`, numbered from `first`.
     static Frames along(const CameraPath& path, const View& base, double fps, int first);

@@ -1,0 +1,151 @@
+// The irradiance cache as paths use it: lookups that find records, or note a request for one (and make the
+// work item wait for it, or let the path sample the light itself); and records made of a hemisphere of rays,
+// here in a uniform surrounding of radiance L (a tracer that answers every ray with L).
+#include "integrator/cache_client.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "integrator/testing.h"
+
+using namespace brume;
+using namespace brume::integrator_testing;
+using std::numbers::pi;
+
+namespace {
+
+const std::string kFloor = "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                           "grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n";
+constexpr float kL = 2;
+
+RenderSettings cached(int ad = 64) {
+    RenderSettings s = test::fixedSeed();
+    s.ambientBounces = 1, s.ambientAccuracy = 0.1, s.ambientDivisions = ad;
+    return s;
+}
+
+// A cache of the settings' accuracy (its other bounds matter little here).
+struct Cache {
+    SurfaceCache store{SurfaceZones(RecordShape{}), dvec3(0), false};
+};
+
+// A floor point, looked up by a path of weight .3 through a lobe of coefficient 1 at diffuse bounce 0, instant
+// 3.5 (the scene is static: one set of records serves every instant).
+struct Lookup {
+    Parts& parts;
+    Receiver at{dvec3(0.3, -0.4, 0), dvec3(0, 0, 1), 0, 3.5};
+    SurfaceId floor = parts.hit(dvec3(0.3, -0.4, 1), dvec3(0, 0, -1)).surface;
+
+    bool irradiance(CacheVisit* visit, Spectrum& value) {
+        PathContext ctx = parts.context(1, visit);
+        return parts.cache.irradiance(at, floor, 0.3, Spectrum(1.f), ctx, value);
+    }
+    RecordRequest request() const { return {at, floor, 1, 9}; }
+};
+
+// The rays of a record asked by a lookup at diffuse bounce `level` by a ray of weight `weight`.
+int divisions(const Parts& parts, int level, float weight) {
+    RecordRequest q;
+    q.at.level = level, q.weight = weight;
+    return parts.cache.recordDivisions(q);
+}
+
+CacheVisit waiting() {
+    CacheVisit v;
+    v.waits = true;
+    return v;
+}
+
+// A record made in a uniform surrounding of radiance L (the tracer's), at the lookup's point.
+SurfaceRecord uniformRecord(Parts& parts, const Lookup& lookup, CacheVisit& visit) {
+    parts.tracer.value = Spectrum(kL);
+    return parts.cache.makeRecord(lookup.request(), parts.scratch, visit);
+}
+
+}  // namespace
+
+// Without a cache (-aa 0), or outside a loop over work items (no visit), lookups find nothing and note nothing:
+// paths sample the light themselves.
+TEST(CacheClient, WithoutACacheOrAVisitNothingIsLookedUp) {
+    Parts none(kFloor, cached());
+    CacheVisit visit = waiting();
+    Spectrum value;
+    EXPECT_FALSE(Lookup{none}.irradiance(&visit, value));
+    EXPECT_TRUE(visit.requests.empty());
+    Cache cache;
+    Parts parts(kFloor, cached(), &cache.store);
+    EXPECT_FALSE(Lookup{parts}.irradiance(nullptr, value));
+}
+
+// A miss notes one request (the receiver, the surface its rays will leave, the looking ray's weight). A work
+// item that waits gets 0 (moot: it runs again once the record is made); a record's own rays, which do not
+// wait, sample the light themselves.
+TEST(CacheClient, AMissNotesARequestAndAWaitingItemGetsZero) {
+    Cache cache;
+    Parts parts(kFloor, cached(), &cache.store);
+    Lookup lookup{parts};
+    CacheVisit visit = waiting();
+    Spectrum value(7.f);
+    EXPECT_TRUE(lookup.irradiance(&visit, value));
+    EXPECT_TRUE(value.isBlack());
+    EXPECT_TRUE(visit.missed);
+    ASSERT_EQ(visit.requests.size(), 1u);
+    const RecordRequest& q = visit.requests[0];
+    EXPECT_EQ(q.at.point, lookup.at.point);
+    EXPECT_EQ(q.at.normal, lookup.at.normal);
+    EXPECT_EQ(q.at.level, 0);
+    EXPECT_EQ(q.at.time, 3.5);
+    EXPECT_EQ(q.leaving, lookup.floor);
+    EXPECT_EQ(q.weight, 0.3f);
+    CacheVisit recordsRays;
+    EXPECT_FALSE(lookup.irradiance(&recordsRays, value));
+    EXPECT_FALSE(recordsRays.missed);
+    EXPECT_EQ(recordsRays.requests.size(), 1u);
+}
+
+// In a uniform surrounding of radiance L a record holds E = πL (its cosine-weighted strata sum it exactly:
+// 1e-5) and no translational gradient (neighbouring strata agree: 1e-5 E); it is of the request's bounce and
+// instant, made of about -ad rays (64 ± 8: whole rows and columns), each a sampled path one bounce deeper
+// leaving the floor upward. Inserted, it serves lookups there.
+TEST(CacheClient, ARecordInAUniformSurroundingHoldsPiL) {
+    Cache cache;
+    Parts parts(kFloor, cached(64), &cache.store);
+    Lookup lookup{parts};
+    CacheVisit visit;
+    SurfaceRecord record = uniformRecord(parts, lookup, visit);
+    const double E = pi * kL;
+    EXPECT_NEAR(record.field(SurfaceRecord::kIrradiance)[0], E, 1e-5 * E);
+    for (auto gradient : {SurfaceRecord::kAlongK1, SurfaceRecord::kAlongK2})
+        EXPECT_NEAR(record.field(gradient)[0], 0, 1e-5 * E) << gradient;
+    EXPECT_EQ(record.level, 0);
+    EXPECT_EQ(record.time, 3.5);
+    EXPECT_EQ(record.point, lookup.at.point);
+    EXPECT_NEAR(double(parts.tracer.rays.size()), 64, 8);
+    for (const AskedRay& r : parts.tracer.rays) {
+        EXPECT_GT(r.ray.dir.z, 0);
+        EXPECT_EQ(r.ray.leaving, lookup.floor);
+        EXPECT_EQ(r.state.kind, PathState::Kind::Sampled);
+        EXPECT_EQ(r.state.ambientLevel, 1);
+    }
+    EXPECT_TRUE(visit.requests.empty());  // the tracer looked nothing up
+    cache.store.insert({record});
+    Spectrum value;
+    CacheVisit next = waiting();
+    ASSERT_TRUE(lookup.irradiance(&next, value));
+    EXPECT_NEAR(value[0], E, 1e-5 * E);
+    EXPECT_TRUE(next.requests.empty());
+}
+
+// Radiance's -ad at the first bounce; deeper, scaled by the looking ray's weight, but never below 16 rays
+// (nor above -ad).
+TEST(CacheClient, RecordDivisionsScaleWithTheWeightBelowTheFirstBounce) {
+    Parts parts(kFloor, cached(400));
+    EXPECT_EQ(divisions(parts, 0, 0.1f), 400);
+    EXPECT_EQ(divisions(parts, 1, 0.5f), 200);
+    EXPECT_EQ(divisions(parts, 2, 1.f), 400);
+    EXPECT_EQ(divisions(parts, 1, 0.01f), 16);
+    Parts few(kFloor, cached(8));
+    EXPECT_EQ(divisions(few, 1, 0.01f), 8);
+}

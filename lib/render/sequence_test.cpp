@@ -1,0 +1,153 @@
+// The work of a run in passes: with the irradiance cache, items that miss records run again once the records
+// are made, in an order the threads do not change; each frame's passes start afresh, and the records of one
+// instant serve only that instant.
+#include "render/sequence.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+#include "medium/testing.h"
+#include "ray_path_dir.h"
+#include "scene_text.h"
+
+using namespace brume;
+using namespace brume::test;
+
+namespace {
+
+// A wide ground of reflectance .3 under a uniform sky of radiance 2 (a glow, which no shadow ray samples): a
+// sensor facing down sees only the ground, of radiance ρL, so its irradiance is πρL, all of it reaching it
+// in two diffuse bounces.
+const char* kGround = "void glow skyglow 0 0 4 2 2 2 0\n"
+                      "skyglow source sky 0 0 4 0 0 1 180\n"
+                      "void plastic ground 0 0 5 .3 .3 .3 0 0\n"
+                      "ground polygon floor 0 0 12 -500 -500 0 500 -500 0 500 500 0 -500 500 0\n";
+const double kDown = std::numbers::pi * 0.3 * 2;
+
+// A lamp over a floor by a wall: indirect light that varies from point to point, which records estimate with
+// noise (so values depend on which records serve them).
+const char* kRoom = "void light lamp 0 0 3 50 50 50\n"
+                    "lamp sphere bulb 0 0 4 0 0 2.5 .2\n"
+                    "void plastic white 0 0 5 .7 .7 .7 0 0\n"
+                    "white polygon floor 0 0 12 -3 -3 0 3 -3 0 3 3 0 -3 3 0\n"
+                    "white polygon wall 0 0 12 -3 3 0 3 3 0 3 3 3 -3 3 3\n";
+
+RenderSettings settings(double aa, uint64_t seed = 0) {
+    RenderSettings s = fixedSeed();
+    s.seed = seed;
+    s.ambientBounces = 2, s.ambientAccuracy = aa, s.ambientDivisions = 64;
+    return s;
+}
+
+// Sensors facing down, in rows of 13 over the floor: each item's last value, and how often each ran.
+struct Sensors {
+    std::vector<double> values;
+    std::vector<std::atomic<int>> runs;
+
+    Sensors(Sequence& sequence, size_t count) : values(count), runs(count) {
+        sequence.run(count, 0, [&](size_t i, WorkItem& item) {
+            ++runs[i];
+            dvec3 p(0.43 * (i % 13) - 2.6, 0.37 * (i / 13) - 2.6, 1 + 0.01 * (i % 7));
+            values[i] = sequence.integrator().irradiance({p, dvec3(0, 0, -1), i}, item).value[0];
+        });
+    }
+};
+
+}  // namespace
+
+// -u-: the records are made in an order the items fix, not the threads, so the values are the same on one
+// thread or two (another seed gives others: they do depend on the records' samples).
+TEST(Sequence, SameValuesOnOneOrTwoThreadsWithTheCache) {
+    TestScene t(kRoom);
+    auto values = [&](int threads, uint64_t seed) {
+        tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
+        Sequence sequence(t.scene, t.render, settings(0.1, seed));
+        return Sensors(sequence, 169).values;
+    };
+    std::vector<double> one = values(1, 0);
+    EXPECT_EQ(one, values(2, 0));
+    EXPECT_NE(one, values(2, 1));
+}
+
+// An item whose lookups missed records runs again once they are made, and the value it keeps is its last
+// one: a waiting miss counts 0 for the indirect light, all the light here, so a moot value would be 0. Each is
+// πρL within float precision (1e-5): every record's strata see the uniform ground, every ground record's the
+// uniform sky.
+TEST(Sequence, ItemsThatMissRecordsRunAgainAndKeepTheirLastValue) {
+    TestScene t(kGround);
+    Sequence sequence(t.scene, t.render, settings(0.1));
+    ASSERT_NE(sequence.cache(), nullptr);
+    Sensors sensors(sequence, 12);
+    int again = 0;
+    for (size_t i = 0; i < sensors.values.size(); ++i) {
+        again += sensors.runs[i] > 1;
+        EXPECT_NEAR(sensors.values[i], kDown, 1e-5 * kDown) << i;
+    }
+    EXPECT_GT(again, 0);
+}
+
+// Without the cache (-aa 0) nothing is waited for: each item runs once, and its paths find πρL too (each
+// meets the ground, then the sky).
+TEST(Sequence, WithoutTheCacheEachItemRunsOnce) {
+    TestScene t(kGround);
+    Sequence sequence(t.scene, t.render, settings(0));
+    EXPECT_EQ(sequence.cache(), nullptr);
+    Sensors sensors(sequence, 12);
+    for (size_t i = 0; i < sensors.values.size(); ++i) {
+        EXPECT_EQ(sensors.runs[i], 1) << i;
+        EXPECT_NEAR(sensors.values[i], kDown, 1e-5 * kDown) << i;
+    }
+}
+
+namespace {
+
+// Absorbing smoke (key frames of density 1 at t = 10 s and 3 at t = 20 s, written into `dir`) over a floor
+// lit by a lamp above it.
+std::string smokeInTime(const RayPathDir& dir) {
+    using namespace medium::testing;
+    writeGrid(dir.path() / "one.vdb", boxGrid({0, 0, 0}, {19, 19, 19}, 1.0f, 0.1));
+    writeGrid(dir.path() / "three.vdb", boxGrid({0, 0, 0}, {19, 19, 19}, 3.0f, 0.1));
+    return "void light lamp 0 0 3 50 50 50\n"
+           "lamp sphere bulb 0 0 4 1 1 3 .2\n"
+           "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+           "grey polygon floor 0 0 12 -2 -2 0 4 -2 0 4 4 0 -2 4 0\n"
+           "grey polygon wall 0 0 12 -2 4 0 4 4 0 4 4 3 -2 4 3\n"
+           "void smoke s 4 20 three.vdb 10 one.vdb 0 3 .5 .5 .5\n";
+}
+
+// That scene, seen from the side with the cache on.
+struct SmokeInTime {
+    RayPathDir dir;
+    TestScene t{smokeInTime(dir)};
+
+    std::vector<float> frame(Sequence& sequence, double time) const {
+        View v;
+        v.vp = {1, -3, 2};
+        v.vd = {0, 1, -0.4};
+        PictureSettings p;
+        p.xres = p.yres = 8;
+        return sequence.render(SequenceFrame{v, 0, time}, p, nullptr).picture.pixels;
+    }
+    Sequence fresh() const { return Sequence(t.scene, t.render, settings(0.1)); }
+};
+
+}  // namespace
+
+// A frame is rendered as if it were the first: its passes are numbered afresh (they seed its records), and the
+// records of other instants never serve it. So the frame at 20 s after the one at 10 s is the frame at 20 s of
+// a fresh sequence, pixel for pixel; and denser smoke darkens it.
+TEST(Sequence, EachFrameIsRenderedAsInAFreshSequence) {
+    SmokeInTime smoke;
+    Sequence sequence = smoke.fresh();
+    std::vector<float> at10 = smoke.frame(sequence, 10), at20 = smoke.frame(sequence, 20);
+    Sequence fresh10 = smoke.fresh(), fresh20 = smoke.fresh();
+    EXPECT_EQ(at10, smoke.frame(fresh10, 10));
+    EXPECT_EQ(at20, smoke.frame(fresh20, 20));
+    double sum10 = 0, sum20 = 0;
+    for (size_t i = 0; i < at10.size(); ++i) sum10 += at10[i], sum20 += at20[i];
+    EXPECT_LT(sum20, 0.95 * sum10);
+}
