@@ -139,7 +139,7 @@ private:
 };
 
 // A mixture of the samplers above, drawn by inverting its cumulative distribution Σ share_i F_i(t) (Newton's
-// method, bisection where it strays): stratified numbers u then give draws stratified over the whole mixture.
+// method, bisection where it strays or stalls): stratified numbers u then give draws stratified over the whole mixture.
 // Drawn strategy by strategy instead, a strategy with a small share (a guard) would get one or two draws of
 // its own and their noise, and the count each strategy got would vary with the draws.
 class DistanceMixture {
@@ -170,13 +170,19 @@ public:
         }
         if (!std::isfinite(b)) return lo_;
         double x = from > lo_ ? a : 0.5 * (a + b);
+        double step = b - a, stepBefore = step;
         for (int i = 0; i < 100 && b - a > 1e-13 * std::max(1.0, std::abs(x)); ++i) {
             CdfAndDensity f = cdfAndDensity(x);
             double g = f.cdf - u;
             if (std::abs(g) <= 1e-10) break;  // (t off by δ: the density at most δ·p'/p relatively off)
             (g < 0 ? a : b) = x;
+            // Newton's step where it stays in the bracket and is under half the step before last; else
+            // bisection: Newton's steps can cycle about a jump of the density (Numerical Recipes' rtsafe).
             double next = f.density > 0 ? x - g / f.density : a - 1;
-            x = next > a && next < b ? next : 0.5 * (a + b);
+            bool newton = next > a && next < b && std::abs(2 * g) <= std::abs(stepBefore * f.density);
+            stepBefore = step;
+            step = newton ? std::abs(next - x) : 0.5 * (b - a);
+            x = newton ? next : 0.5 * (a + b);
         }
         return x;
     }
