@@ -225,6 +225,14 @@ CacheFile::CacheFile(std::string path, CacheIdentity identity)
 
 CacheFile::~CacheFile() { close(fd_); }
 
+// Header text from the file as a message may show it: bytes that are not printable ASCII as '?', at most 80
+// of them (a damaged file must not write binary to a terminal).
+static std::string shown(std::string_view text) {
+    std::string out;
+    for (char c : text.substr(0, 80)) out += c >= ' ' && c <= '~' ? c : '?';
+    return text.size() > 80 ? out + "..." : out;
+}
+
 // The options of an OPTIONS= text, each with its values ("-ab 5", "-av 0 0 0"), and the program's version.
 static std::vector<std::string> optionGroups(std::string_view text) {
     std::vector<std::string> groups;
@@ -249,7 +257,7 @@ static std::string optionDifference(std::string_view file, std::string_view now)
         for (const std::string& g : v) out += (out.empty() ? "" : " ") + g;
         return out.empty() ? std::string("none") : out;
     };
-    return join(onlyA) + " (now " + join(onlyB) + ")";
+    return shown(join(onlyA)) + " (now " + join(onlyB) + ")";
 }
 
 void CacheFile::checkHeader() {
@@ -269,13 +277,13 @@ void CacheFile::checkHeader() {
     };
     if (fields["FORMAT"] == "brume_irradiance_cache 1")
         refuse("was made by an earlier Brume (cache format 1, whose records have no instant)");
-    if (fields["FORMAT"] != kFormat) refuse("has another format (FORMAT=" + fields["FORMAT"] + ")");
+    if (fields["FORMAT"] != kFormat) refuse("has another format (FORMAT=" + shown(fields["FORMAT"]) + ")");
     if (fields["SCENE"] != identity_.scene)
         refuse("was made for another scene (its SCENE= differs: the scene or a file it reads has changed)");
     if (fields["OPTIONS"] != identity_.options)
         refuse("was made with other options: " + optionDifference(fields["OPTIONS"], identity_.options));
     if (fields["CHANNELS"] != std::to_string(identity_.channels))
-        refuse("holds values of " + fields["CHANNELS"] + " channels, not " + std::to_string(identity_.channels));
+        refuse("holds values of " + shown(fields["CHANNELS"]) + " channels, not " + std::to_string(identity_.channels));
     offset_ = end + 2;
 }
 
