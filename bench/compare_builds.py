@@ -137,7 +137,6 @@ def main():
             rows.append((name, ia, ib, ta, tb))
             print(row_text(rows[-1]), flush=True)
     text = table(rows, bins, o.repeat)
-    print(text)
     plotted = plot(rows)
     write_result(text, "compare_builds.md", plotted, "compare_builds.png")
 

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -18,6 +18,7 @@
 
 #include "cache/record_request.h"
 #include "cache/zone_index.h"
+#include "sampling/random.h"
 #include "spectrum/spectrum.h"
 
 namespace brume {
@@ -31,7 +32,8 @@ public:
 
     // Regions and the index are measured from `origin` (the scene's): the same records wherever the model
     // stands. `kind` outlives the layer.
-    RecordLayer(const Kind& kind, const dvec3& origin) : kind_(kind), origin_(origin) {}
+    RecordLayer(const Kind& kind, const dvec3& origin)
+        : kind_(kind), origin_(origin), beforeRecords_(regionOf(kind.sizeBeforeRecords())) {}
     RecordLayer(const RecordLayer&) = delete;
     RecordLayer& operator=(const RecordLayer&) = delete;
 
@@ -57,14 +59,15 @@ public:
     // is worth (`missesToPay` of it) have come.
     template <class Worth>
     std::optional<RegionKey> countMiss(const RecordRequest& q, const Worth& missesToPay) {
-        double size = regionSize(q.at.level);
+        const RegionSize& region = regionSize(q.at.level);
+        double size = region.size;
         dvec3 p = q.at.point - origin_;
-        RegionKey key{q.at.level, kind_.facing(q.at), std::llround(std::log2(size)), regionIndex(p.x, size),
-                      regionIndex(p.y, size), regionIndex(p.z, size)};
-        Region& region = regions_[key];
-        if (region.misses++ == 0) region.first = q, region.order = requestsSeen_;
+        RegionKey key{q.at.level, kind_.facing(q.at), region.log2, regionIndex(p.x, size), regionIndex(p.y, size),
+                      regionIndex(p.z, size)};
+        Region& counted = regions_[key];
+        if (counted.misses++ == 0) counted.first = q, counted.order = requestsSeen_;
         ++requestsSeen_;
-        if (region.misses == missesToPay(region.first)) return key;
+        if (counted.misses == missesToPay(counted.first)) return key;
         return std::nullopt;
     }
     // The first request of a region that has paid (with when it came), unless a record made since covers
@@ -84,8 +87,10 @@ public:
         size_t before = records_.size();
         for (Record& r : records) {
             if (sizes_.size() <= size_t(r.level)) sizes_.resize(r.level + 1);
-            sizes_[r.level].first += std::log(kind_.size(r));
-            ++sizes_[r.level].second;
+            LevelSizes& level = sizes_[r.level];
+            level.logSum += std::log(kind_.size(r));
+            ++level.count;
+            level.region = regionOf(std::exp(level.logSum / level.count));
             if (unsaved) unsaved_.push_back(records_.size());
             records_.push_back(std::move(r));
             reconcile(records_.size() - 1);
@@ -140,12 +145,24 @@ private:
 
     // Regions where misses are counted: cubes twice the typical record's size at that bounce (a power of
     // two, so that they stay put while the typical size drifts).
-    double regionSize(int level) const {
-        double typical = kind_.sizeBeforeRecords();
-        if (size_t(level) < sizes_.size() && sizes_[level].second > 0)
-            typical = std::exp(sizes_[level].first / sizes_[level].second);
-        return std::exp2(std::round(std::log2(2 * typical)));
+    struct RegionSize {
+        double size;
+        long long log2;
+    };
+    static RegionSize regionOf(double typical) {
+        double size = std::exp2(std::round(std::log2(2 * typical)));
+        return {size, std::llround(std::log2(size))};
     }
+    const RegionSize& regionSize(int level) const {
+        return size_t(level) < sizes_.size() && sizes_[level].count > 0 ? sizes_[level].region : beforeRecords_;
+    }
+    struct KeyHash {
+        size_t operator()(const RegionKey& k) const {
+            uint64_t h = 0;
+            for (long long x : k) h = mixBits(h ^ uint64_t(x));
+            return size_t(h);
+        }
+    };
 
     // The region of coordinate x along one axis, for regions `size` wide. Coordinates so far out that the
     // index would not fit a long long (a sensor at 1e300) share the outermost region on their side:
@@ -161,10 +178,16 @@ private:
     ZoneIndex index_;  // over the zones of records_[0, index_.size())
     std::vector<ZoneBox> boxes_;
     std::vector<size_t> unsaved_;
-    // Per bounce: the sum of the log sizes of its records and their count (their typical size sets the
-    // regions misses are counted in), and the misses counted per region.
-    std::vector<std::pair<double, int>> sizes_;
-    std::map<RegionKey, Region> regions_;
+    // Per bounce: the sum of the log sizes of its records, their count, and the size of the regions misses
+    // are counted in that the records' typical size gives; the misses counted per region.
+    struct LevelSizes {
+        double logSum = 0;
+        int count = 0;
+        RegionSize region{};
+    };
+    std::vector<LevelSizes> sizes_;
+    RegionSize beforeRecords_;
+    std::unordered_map<RegionKey, Region, KeyHash> regions_;
     uint64_t requestsSeen_ = 0;
 };
 

@@ -6,19 +6,12 @@
 #include <cmath>
 #include <glm/gtx/component_wise.hpp>
 
-#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
 using namespace integrator_detail;
 
 namespace {
-
-RenderSettings inBands(RenderSettings settings) {
-    const Spectrum& av = settings.ambientValue;
-    if (av.size() == 3) settings.ambientValue = spectrumFromRgb(av[0], av[1], av[2]);
-    return settings;
-}
 
 uint64_t runSeed(const RenderSettings& settings) {
     return settings.randomSampling
@@ -33,7 +26,7 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       settings_(inBands(settings)),
       seeds_{runSeed(settings)},
       roulette_(settings.maxReflections, settings.minWeight),
-      media_(scene, settings),
+      media_(scene, settings_),
       shading_(scene),
       shadowRays_(scene, shading_, media_),
       lights_(scene, settings_, shading_, media_, shadowRays_),

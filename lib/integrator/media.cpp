@@ -3,16 +3,11 @@
 #include <stdexcept>
 
 #include "integrator/settings.h"
-#include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
 
 Media::Media(const RenderScene& scene, const RenderSettings& settings)
-    : scene_(scene), majorantCell_(settings.majorantCell) {
-    const HomogeneousMedium& m = settings.medium;
-    global_.extinction = spectrumFromRgb(m.extinction[0], m.extinction[1], m.extinction[2]);
-    global_.albedo = spectrumFromRgb(m.albedo[0], m.albedo[1], m.albedo[2]);
-    global_.g = m.g;
+    : scene_(scene), majorantCell_(settings.majorantCell), global_(settings.medium) {
     present_ = !global_.clear() || scene.hasMists() || !scene.smoke().empty();
 }
 

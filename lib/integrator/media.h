@@ -15,6 +15,7 @@ struct RenderSettings;
 
 class Media {
 public:
+    // `settings` in the sampling's bands (inBands).
     Media(const RenderScene& scene, const RenderSettings& settings);
 
     // Builds the smoke at instant `time` (once; where nothing changes in time, once for every instant).

@@ -23,8 +23,7 @@ struct RenderSettings {
     std::string cacheFile;           // -af: where the cache's records are kept between runs (changes no value)
     int ambientWeight = 0;           // -aw (Radiance's weight of -av in its records: no effect)
     double photonSearchRadius = 0;   // -am (no photon maps: no effect)
-    Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce (RGB as given; the
-                                     // integrator lifts it to the sampling's bands)
+    Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce (RGB as given; see inBands)
     int maxReflections = -10;        // -lr: > 0 hard limit; ≤ 0 Russian roulette past |lr| reflections
     double minWeight = 1e-4;         // -lw: rays below this weight are played by Russian roulette
     double sourceSubdivision = 0.2;  // -ds: more shadow rays for sources larger than this, seen from a point
@@ -40,7 +39,7 @@ struct RenderSettings {
     uint64_t seed = 0;               // used when -u-
     SpectralSampling sampling;       // -cs, -cw
     std::optional<double> time;      // -T: the scene's instant (s), for smoke that evolves in time
-    HomogeneousMedium medium;        // -me, -ma (RGB as given; the integrator lifts them to the bands), -mg
+    HomogeneousMedium medium;        // -me, -ma (RGB as given; see inBands), -mg
     double mediumSampling = 0;       // -ms: spacing of in-scattering samples along a ray (0: one per ray)
     int majorantCell = 8;            // -mc: smoke majorant cells, in voxels (0: one for the whole grid)
 
@@ -54,5 +53,9 @@ struct RenderSettings {
         return ambientAccuracy > 0 && ambientBounces > 0 && ambientValue.isBlack() && !ambientLimit;
     }
 };
+
+// The settings as light transport uses them: the colours given in RGB (-av, -me, -ma) lifted to the
+// sampling's bands (smooth spectra; greys stay flat).
+RenderSettings inBands(RenderSettings settings);
 
 }  // namespace brume

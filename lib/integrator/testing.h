@@ -60,7 +60,7 @@ struct Parts {
     explicit Parts(const std::string& text, const RenderSettings& s = test::fixedSeed(),
                    const SurfaceCache* surfaceCache = nullptr)
         : scene(text),
-          settings(s),
+          settings(inBands(s)),
           tracer(Spectrum(1.f)),
           roulette(s.maxReflections, s.minWeight),
           media(scene.render, settings),
