@@ -65,6 +65,16 @@ TEST_F(RtraceCli, AsciiRecordsMatchRadianceByteForByte) {
               "1.000000e+00\t0.000000e+00\t0.000000e+00\t0.000000e+00\t*\t*\t~\t\n");
 }
 
+// A ray that crosses surfaces it does not see reports the surface beyond them, at its distance from the ray's
+// origin: the floor 1 m below the start, seen through a mist ball whose boundary it crosses at 0.25 and 0.75
+// (Brume before gave 1e10: the lengths added to those of a hit never recorded).
+TEST_F(RtraceCli, LengthsThroughUnseenSurfacesCountFromTheOrigin) {
+    writeScene("mist.rad", std::string(kScene) + "void mist fog 0 0 3 .01 .01 .01\nfog sphere ball 0 0 4 0 0 .5 .25\n");
+    Output r = rtrace("-h -ab 0 -oLls mist.rad", "0 0 1 0 0 -1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "1.000000e+00\t1.000000e+00\tfloor\t\n");
+}
+
 TEST_F(RtraceCli, BinaryFormatsCarryNativeNumbers) {
     Output r = rtrace("-h- -faf -ovL s.rad", "0 0 1 1 0 0\n");  // misses: value 0, length 1e10
     ASSERT_EQ(r.out.size(), 4 * sizeof(float));

@@ -231,7 +231,7 @@ Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const Pa
     RayOutputs* out = ctx.recording();
     RayRecord beyond;
     Spectrum value = radiance(on, next, ctx, sourceShare, out ? &beyond : nullptr);
-    if (out) out->passedThrough(beyond);
+    if (out) out->passedThrough(beyond, hit.t);
     return value;
 }
 

@@ -30,11 +30,10 @@ void RayOutputs::distantSource(int object, int modifier, const dvec3& dir) {
     record_->normal = record_->surfaceNormal = -dir;
 }
 
-void RayOutputs::passedThrough(const RayRecord& beyond) {
-    double first = record_->firstLength;
+void RayOutputs::passedThrough(const RayRecord& beyond, double distance) {
     *record_ = beyond;
-    record_->firstLength += first;
-    record_->effectiveLength += first;
+    record_->firstLength += distance;
+    record_->effectiveLength += distance;
 }
 
 void RayOutputs::specularPart(const Spectrum& part, bool reflection, const RayRecord& child, double& strongest) {

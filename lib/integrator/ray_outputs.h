@@ -69,9 +69,10 @@ public:
     }
     // The ray met a source at infinity (named, facing the ray, at no distance).
     void distantSource(int object, int modifier, const dvec3& dir);
-    // The ray went on through a surface that does not shade (antimatter, a mist's, a void or cut-away one):
-    // its record is the onward ray's `beyond`, lengths counted from this ray's origin.
-    void passedThrough(const RayRecord& beyond);
+    // The ray went on through a surface `distance` along it that does not shade it (antimatter, a mist's, a
+    // void or cut-away one, an emitter's back, an illum without material): its record is the onward ray's
+    // `beyond`, lengths counted from this ray's origin.
+    void passedThrough(const RayRecord& beyond, double distance);
     // A specular child of the ray brought `part` of its value (by reflection or transmission); its record
     // `child`. `strongest` keeps the brightest part so far, whose lengths the ray's effective length takes.
     void specularPart(const Spectrum& part, bool reflection, const RayRecord& child, double& strongest);

@@ -90,14 +90,14 @@ TEST(RayOutputs, TheBrightestSpecularChildDecidesTheEffectiveLength) {
 }
 
 // A surface passed through unseen (antimatter, a mist's boundary) leaves the ray the record of what lies
-// beyond, its lengths counted from this ray's origin.
-TEST(RayOutputs, PassingThroughAddsThisRaysFirstLength) {
+// beyond, its lengths counted from this ray's origin: the surface's distance added.
+TEST(RayOutputs, PassingThroughAddsTheSurfacesDistance) {
     RayOutputs outputs;
-    RayRecord record = withLength(1.5), beyond = withLength(2);
+    RayRecord record, beyond = withLength(2);
     beyond.effectiveLength = 4;
     beyond.surfaceObject = 9;
     RayOutputs::Scope scope(outputs, &record);
-    outputs.passedThrough(beyond);
+    outputs.passedThrough(beyond, 1.5);
     EXPECT_EQ(record.firstLength, 3.5);
     EXPECT_EQ(record.effectiveLength, 5.5);
     EXPECT_EQ(record.surfaceObject, 9);
