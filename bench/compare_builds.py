@@ -12,7 +12,7 @@ workload runs the programs of BIN_A and BIN_B on the same input, one thread:
 Workloads: the office's view rays (-ab 0; -ab 1 -aa 0), its sensor grid (path tracing, and the irradiance
 cache's defaults), an rpict picture with the cache, 41 bands, the corridor's FDS soot (-ab 0 and -ab 1 at
 t = 120 s; needs ../shared/data), and a mist (test/data/media). Prints a table, writes
-results/compare_builds.md and results/compare_builds.png (B/A ratios; 1 is no change).
+results/compare_builds.md and results/compare_builds.png (B against A in %).
 """
 import argparse
 import math
@@ -165,13 +165,13 @@ def plot(rows):
 names, ins, wall, png = d["names"], d["ins"], d["wall"], sys.argv[2]
 fig, ax = plt.subplots(figsize=(8, 0.45 * len(names) + 1.2))
 y = range(len(names))
-ax.barh([i - 0.2 for i in y], ins, height=0.4, label="instructions (callgrind)")
-ax.barh([i + 0.2 for i in y], wall, height=0.4, label="wall time (median)")
-ax.axvline(1, color="k", lw=0.8)
+ax.barh([i - 0.2 for i in y], [100 * (r - 1) for r in ins], height=0.4, label="instructions (callgrind)")
+ax.barh([i + 0.2 for i in y], [100 * (r - 1) for r in wall], height=0.4, label="wall time (median)")
+ax.axvline(0, color="k", lw=0.8)
 ax.set_yticks(list(y))
 ax.set_yticklabels(names, fontsize=8)
 ax.invert_yaxis()
-ax.set_xlabel("build B / build A (1: no change)")
+ax.set_xlabel("build B against build A, % (0: no change; > 0: B slower)")
 ax.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(png, dpi=110)
