@@ -1,5 +1,5 @@
 // Records made where lookups missed them, in an order fixed by the work, not by the threads. A loop over work
-// items (lib/render's Passes) runs them in passes against a store that does not change while a pass runs;
+// items (lib/render's Sequence) runs them in passes against a store that does not change while a pass runs;
 // each item notes in its CacheVisit the records it missed; between passes, makeRecords makes the ones the
 // store accepts.
 #pragma once

@@ -83,7 +83,7 @@ int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
     if (ratio <= 0) return 1;
     double angularSize = isDistant() ? 2 * std::sqrt(2 * oneMinusCos_) : size_ / std::max(glm::length(center_ - p), 1e-300);
     // One stratified sample per axis where Radiance makes one partition for sources whose unoccluded diffuse
-    // light has a closed form (shadow rays then only find what is blocked, see Integrator::direct); two for
+    // light has a closed form (shadow rays then only find what is blocked, see LightSampler::directFrom); two for
     // the others, whose random positions need them to be as smooth as Radiance's fixed cell centres.
     double perCell = hasClosedForm() ? 1 : 2;
     int n = static_cast<int>(std::ceil(std::min(16.0, perCell * angularSize * weight / ratio)));

@@ -39,7 +39,7 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
     findShadowBlockers();
 }
 
-// Which modifiers make their surfaces stop shadow rays, as the shadow-ray walk (Integrator::transmittance)
+// Which modifiers make their surfaces stop shadow rays, as the shadow-ray walk (ShadowRays::toSurface)
 // judges them: not patterned, mixed or cut away, and neither passing light (glass, trans, dielectric, void
 // materials) nor an illum, whose effect depends on the source behind it.
 void RenderScene::findShadowBlockers() {
