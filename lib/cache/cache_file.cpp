@@ -225,13 +225,8 @@ CacheFile::CacheFile(std::string path, CacheIdentity identity)
 
 CacheFile::~CacheFile() { close(fd_); }
 
-// Header text from the file as a message may show it: bytes that are not printable ASCII as '?', at most 80
-// of them (a damaged file must not write binary to a terminal).
-static std::string shown(std::string_view text) {
-    std::string out;
-    for (char c : text.substr(0, 80)) out += c >= ' ' && c <= '~' ? c : '?';
-    return text.size() > 80 ? out + "..." : out;
-}
+// Header text from the file as a message may show it (a damaged file must not write binary to a terminal).
+static std::string shown(std::string_view text) { return shownBytes(text, 80); }
 
 // The options of an OPTIONS= text, each with its values ("-ab 5", "-av 0 0 0"), and the program's version.
 static std::vector<std::string> optionGroups(std::string_view text) {

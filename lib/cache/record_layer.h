@@ -97,9 +97,10 @@ public:
         }
         size_t indexed = index_.size();
         if (records_.size() - indexed <= std::max(kUnindexedLimit, indexed / 8) && before > 0) return;
-        boxes_.clear();
-        for (const Record& r : records_) boxes_.push_back(kind_.box(r, origin_));
-        index_.build(boxes_);
+        std::vector<ZoneBox> boxes;
+        boxes.reserve(records_.size());
+        for (const Record& r : records_) boxes.push_back(kind_.box(r, origin_));
+        index_.build(boxes);
     }
     // Appends the records added as unsaved since the last call to `out`, in their order.
     void takeUnsaved(std::vector<Record>& out) {
@@ -176,7 +177,6 @@ private:
     dvec3 origin_;
     std::vector<Record> records_;
     ZoneIndex index_;  // over the zones of records_[0, index_.size())
-    std::vector<ZoneBox> boxes_;
     std::vector<size_t> unsaved_;
     // Per bounce: the sum of the log sizes of its records, their count, and the size of the regions misses
     // are counted in that the records' typical size gives; the misses counted per region.

@@ -7,12 +7,12 @@
 namespace brume {
 
 Media::Media(const RenderScene& scene, const RenderSettings& settings)
-    : scene_(scene), majorantCell_(settings.majorantCell), global_(settings.medium) {
+    : scene_(scene), majorantCell_(settings.majorantCell), timed_(scene.variesInTime()), global_(settings.medium) {
     present_ = !global_.clear() || scene.hasMists() || !scene.smoke().empty();
 }
 
 void Media::prepare(double time) {
-    double key = scene_.variesInTime() ? time : 0.0;
+    double key = timed_ ? time : 0.0;
     if (instants_.count(key)) return;
     std::vector<SmokeVolume> smoke;
     for (const SmokeDescription& d : scene_.smoke()) smoke.emplace_back(d, time, majorantCell_);
@@ -20,11 +20,11 @@ void Media::prepare(double time) {
 }
 
 void Media::keepOnly(double time) {
-    if (scene_.variesInTime()) std::erase_if(instants_, [&](const auto& entry) { return entry.first != time; });
+    if (timed_) std::erase_if(instants_, [&](const auto& entry) { return entry.first != time; });
 }
 
 const ParticipatingMedia& Media::smokeAt(double time) const {
-    auto it = instants_.find(scene_.variesInTime() ? time : 0.0);
+    auto it = instants_.find(timed_ ? time : 0.0);
     if (it == instants_.end()) throw std::logic_error("the smoke at an instant not prepared");
     return it->second;
 }

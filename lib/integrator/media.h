@@ -45,6 +45,7 @@ public:
 private:
     const RenderScene& scene_;
     int majorantCell_;
+    bool timed_;  // the smoke changes in time: one ParticipatingMedia per instant, else one for all
     HomogeneousMedium global_;
     bool present_;
     std::map<double, ParticipatingMedia> instants_;

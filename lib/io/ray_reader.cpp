@@ -44,18 +44,8 @@ bool isDecimal(std::string_view w) {
     return s == w.data() + w.size();  // not at a NUL byte inside the word
 }
 
-// `w` in double quotes for a message: cut after kLongestWord characters, bytes that do not print as \xNN
-// (binary input read as ASCII would otherwise write them to the terminal).
-std::string quoted(std::string_view w) {
-    std::string q = "\"";
-    for (size_t i = 0; i < std::min(w.size(), kLongestWord); ++i) {
-        unsigned char c = static_cast<unsigned char>(w[i]);
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "\\x%02x", c);
-        q += std::isprint(c) ? std::string(1, char(c)) : std::string(hex);
-    }
-    return q + (w.size() > kLongestWord ? "...\"" : "\"");
-}
+// `w` in double quotes for a message (shownBytes: binary input read as ASCII never reaches the terminal).
+std::string quoted(std::string_view w) { return "\"" + shownBytes(w, kLongestWord) + "\""; }
 
 }  // namespace
 

@@ -109,7 +109,8 @@ private:
 
     // Traces the pixels listed, by the sequence's passes (its cache's records are made between them).
     void traceEach(const std::vector<std::pair<int, int>>& pixels) {
-        sequence_.run(pixels.size(), time_, [&](size_t i, WorkItem& item) { trace(pixels[i].first, pixels[i].second, item); });
+        sequence_.runPart(pixels.size(), time_,
+                          [&](size_t i, WorkItem& item) { trace(pixels[i].first, pixels[i].second, item); });
     }
 
     // A band of rows at a time, for the progress report.

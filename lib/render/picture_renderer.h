@@ -47,7 +47,8 @@ struct RenderedPicture {
 // The resolution and pixel aspect `settings` give for `view` (Radiance's normaspect).
 void fitResolution(const View& view, PictureSettings& settings);
 
-// Renders a valid `view` at the scene's instant `time`, its pixels traced by the sequence's passes;
+// Renders a valid `view` at the scene's instant `time`, its pixels traced by the sequence's passes (records go
+// to its -af file when the caller is done: Sequence::render);
 // `settings` must have been fitted. Progress counts pixels. Light sources too small for the sampling are
 // drawn in by their coverage of each pixel (small_sources.h).
 RenderedPicture renderPicture(Sequence& sequence, const View& view, double time, const PictureSettings& settings,

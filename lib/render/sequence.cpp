@@ -62,6 +62,11 @@ void Sequence::moveTo(double time) {
 }
 
 void Sequence::run(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item) {
+    runPart(count, time, item);
+    if (cacheFile_) cacheFile_->sync();
+}
+
+void Sequence::runPart(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item) {
     moveTo(time);
     if (!cache_) {
         tbb::parallel_for(size_t(0), count, [&](size_t i) {
@@ -97,12 +102,13 @@ void Sequence::run(size_t count, double time, const std::function<void(size_t, W
         makeRecords(*cache_, requests, missesToPay, make);
         pending.swap(again);
     }
-    if (cacheFile_) cacheFile_->sync();
 }
 
 RenderedPicture Sequence::render(const SequenceFrame& frame, const PictureSettings& settings, ProgressMeter* progress) {
     passes_ = 0;
-    return renderPicture(*this, frame.view, frame.time.value_or(0), settings, progress);
+    RenderedPicture picture = renderPicture(*this, frame.view, frame.time.value_or(0), settings, progress);
+    if (cacheFile_) cacheFile_->sync();
+    return picture;
 }
 
 }  // namespace brume

@@ -38,6 +38,9 @@ public:
     // Runs work items 0 … count-1 at instant `time` on all threads, each given its thread's scratch and its
     // cache visit, in passes as the cache needs them; then appends the records made to the -af file.
     void run(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item);
+    // The same for a part of a larger piece of work (a picture's band of rows), whose records go to the -af
+    // file when the whole is done.
+    void runPart(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item);
     // A frame's picture. Each frame's passes are numbered from the first, as if it were alone: its records
     // are seeded by where its pixels lie, not by the frames before it.
     RenderedPicture render(const SequenceFrame& frame, const PictureSettings& settings, ProgressMeter* progress);

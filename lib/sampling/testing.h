@@ -398,4 +398,26 @@ inline void expectSamplesFollowDensity(const DistanceSampler& sample, const Dist
     EXPECT_TRUE(r.accepted) << r.report;
 }
 
+// A draw with the density it carries (a lobe's or a phase function's sample: its direction and pdf).
+struct WeighedDraw {
+    dvec3 dir;
+    double pdf;
+};
+using WeighedSampler = std::function<std::optional<WeighedDraw>(double u, double v)>;
+
+// The draws follow `density`, and each draw's own pdf is `density` of its direction (within 1e-9): an
+// integrator weighs a drawn ray by the one and a light sample by the other (MIS), so either off biases the
+// light it finds.
+inline void expectDrawsFollowTheirDensity(const WeighedSampler& sample, const DirectionDensity& density,
+                                          const DirectionOptions& options = {}) {
+    int disagreeing = 0;
+    auto direction = [&](double u, double v) -> std::optional<dvec3> {
+        std::optional<WeighedDraw> d = sample(u, v);
+        if (d && !(std::abs(d->pdf - density(d->dir)) <= 1e-9 * d->pdf)) ++disagreeing;
+        return d ? std::optional(d->dir) : std::nullopt;
+    };
+    expectSamplesFollowDensity(direction, density, options);
+    EXPECT_EQ(disagreeing, 0) << "draws whose own pdf is not the density of their direction";
+}
+
 }  // namespace brume::sampling::testing

@@ -1,5 +1,7 @@
 #include "util/error.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -57,6 +59,17 @@ void warnOnce(const std::string& what) {
         if (!said.insert(what).second) return;
     }
     warn(what);
+}
+
+std::string shownBytes(std::string_view text, size_t longest) {
+    std::string out;
+    for (size_t i = 0; i < std::min(text.size(), longest); ++i) {
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "\\x%02x", c);
+        out += std::isprint(c) ? std::string(1, char(c)) : std::string(hex);
+    }
+    return text.size() > longest ? out + "..." : out;
 }
 
 }  // namespace brume

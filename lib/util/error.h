@@ -3,6 +3,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace brume {
 
@@ -20,6 +21,10 @@ public:
     explicit Error(const std::string& what) : std::runtime_error(what) {}
     Error(const SourceLocation& where, const std::string& what);
 };
+
+// Untrusted text (bytes read from a file or a stream) as a message may show it: bytes that do not print as
+// \xNN, cut after `longest` of them with "..." (binary input would otherwise write to the terminal).
+std::string shownBytes(std::string_view text, size_t longest);
 
 // A mistake in the command line: reported as an Error, followed by the program's usage.
 class UsageError : public Error {
