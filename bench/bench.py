@@ -9,6 +9,7 @@ import hashlib
 import json
 import math
 import os
+import platform
 import random
 import shutil
 import statistics
@@ -120,6 +121,17 @@ def frozen_octree(rad, tmp):
     return path
 
 
+def machine():
+    """The machine's name, and its processor, which cached timings hold for."""
+    model = "unknown processor"
+    try:
+        with open("/proc/cpuinfo") as f:
+            model = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), model)
+    except OSError:
+        pass
+    return "%s (%s x%d)" % (platform.node(), model, os.cpu_count() or 1)
+
+
 def git_commit():
     """HEAD's short hash, with -dirty if the sources have uncommitted changes (a guess at what was built)."""
     try:
@@ -134,11 +146,8 @@ def git_commit():
 
 # ---------------------------------------------------------------- reference
 
-def load_reference(path=REFERENCE, options=REF_OPTIONS):
-    """The cached reference, if it was made from the current scene and grid with these options: list of lux,
-    list of rel. SE, metadata."""
-    if not os.path.exists(path):
-        return None
+def read_reference(path):
+    """A reference file's header fields, lux and relative standard errors (the columns make_reference writes)."""
     meta, lx, se = {}, [], []
     with open(path) as f:
         for line in f:
@@ -151,6 +160,15 @@ def load_reference(path=REFERENCE, options=REF_OPTIONS):
             if len(v) >= 8:
                 lx.append(float(v[6]))
                 se.append(float(v[7]) / 100)
+    return meta, lx, se
+
+
+def load_reference(path=REFERENCE, options=REF_OPTIONS):
+    """The cached reference, if it was made from the current scene and grid with these options: list of lux,
+    list of rel. SE, metadata."""
+    if not os.path.exists(path):
+        return None
+    meta, lx, se = read_reference(path)
     if meta.get("scene sha256") != sha256(SCENE) or meta.get("grid sha256") != sha256(GRID):
         print("bench: %s was made for another scene or grid: remaking it" % os.path.relpath(path, ROOT))
         return None
@@ -158,6 +176,23 @@ def load_reference(path=REFERENCE, options=REF_OPTIONS):
         print("bench: %s was made with other options: remaking it" % os.path.relpath(path, ROOT))
         return None
     return lx, se, meta
+
+
+def time_to(points, target):
+    """The time at which a ladder of (time, RMS error) points first reaches an RMS error of target, interpolated
+    log-log between rungs (a rung's own time if the first one is there already); None if it never does."""
+    pts = sorted(points)
+    if not pts:
+        return None
+    if pts[0][1] <= target:
+        return pts[0][0]
+    for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
+        if e1 <= target < e0:
+            f = math.log(target / e0) / math.log(e1 / e0)
+            return math.exp(math.log(t0) + f * math.log(t1 / t0))
+        if e1 <= target:
+            return t1
+    return None
 
 
 def make_reference(rtrace, threads, path=REFERENCE, options=REF_OPTIONS):

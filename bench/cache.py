@@ -18,7 +18,6 @@ import hashlib
 import json
 import math
 import os
-import platform
 import re
 import sys
 import tempfile
@@ -87,17 +86,6 @@ def families(part):
         ("radiance-pt", "Radiance path tracing", "radiance",
          [RADIANCE_PT + ps1 + ["-ad", str(a), "-as", str(a // 2)] for a in ads["radiance"]]),
     ]
-
-
-def machine():
-    """The machine's name, and its processor, which the cached Radiance timings hold for."""
-    model = "unknown processor"
-    try:
-        with open("/proc/cpuinfo") as f:
-            model = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), model)
-    except OSError:
-        pass
-    return "%s (%s x%d)" % (platform.node(), model, os.cpu_count() or 1)
 
 
 def megabytes(mb):
@@ -176,7 +164,7 @@ class RadianceRuns:
     def __init__(self, rerun):
         self.rerun = rerun
         self.runs = json.load(open(RADIANCE_RUNS)) if os.path.exists(RADIANCE_RUNS) else {}
-        self.scene, self.machine = bench.sha256(bench.SCENE), machine()
+        self.scene, self.machine = bench.sha256(bench.SCENE), bench.machine()
 
     def key(self, part, cmd):
         shown = [os.path.basename(c) if c.endswith((".oct", "/rtrace", "/rpict")) else c for c in cmd]
@@ -260,20 +248,7 @@ CLOCK = 3  # the time compared and plotted: the rows' wall time (3), or CPU time
 
 
 def time_to(rows, target):
-    """The time at which a ladder first reaches an RMS error of target, interpolated log-log between rungs
-    (a rung's own time if the first one is there already); None if it never does."""
-    pts = sorted((r[CLOCK], r[5]) for r in rows)
-    if not pts:
-        return None
-    if pts[0][1] <= target:
-        return pts[0][0]
-    for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
-        if e1 <= target < e0:
-            f = math.log(target / e0) / math.log(e1 / e0)
-            return math.exp(math.log(t0) + f * math.log(t1 / t0))
-        if e1 <= target:
-            return t1
-    return None
+    return bench.time_to([(r[CLOCK], r[5]) for r in rows], target)
 
 
 def by_family(rows):
@@ -418,7 +393,7 @@ def main():
         if not os.access(os.path.join(brume_bin, exe), os.X_OK):
             sys.exit("bench/cache.py: no Brume %s in %s (build first)" % (exe, brume_bin))
     header = ["Brume: %s (commit %s)" % (brume_bin, bench.git_commit()),
-              "machine: %s, load average %.2f at start" % (machine(), os.getloadavg()[0])]
+              "machine: %s, load average %.2f at start" % (bench.machine(), os.getloadavg()[0])]
     print("\n".join(header))
     rad = bench.find_radiance()
     results, noise, goals, md = {}, {}, [], ["# Irradiance cache: time against error (`bench/cache.py %s`)" %

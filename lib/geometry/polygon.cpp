@@ -129,4 +129,27 @@ std::vector<std::array<int, 3>> triangulate(const Polygon& poly) {
     return tris;
 }
 
+double projectedSolidAngle(const std::vector<dvec3>& vertices, const dvec3& p, const dvec3& n) {
+    // Clipping adds at most one vertex per edge crossing the plane: twice the vertices bound the outline.
+    constexpr size_t kOnStack = 16;
+    dvec3 onStack[2 * kOnStack];
+    std::vector<dvec3> onHeap(vertices.size() > kOnStack ? 2 * vertices.size() : 0);
+    dvec3* clipped = onHeap.empty() ? onStack : onHeap.data();
+    size_t count = 0;
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        dvec3 a = vertices[i] - p, b = vertices[(i + 1) % vertices.size()] - p;
+        double ha = glm::dot(a, n), hb = glm::dot(b, n);
+        if (ha >= 0) clipped[count++] = a;
+        if ((ha >= 0) != (hb >= 0)) clipped[count++] = a + (b - a) * (ha / (ha - hb));
+    }
+    double sum = 0;
+    for (size_t i = 0; i < count; ++i) {
+        dvec3 a = glm::normalize(clipped[i]), b = glm::normalize(clipped[(i + 1) % count]);
+        dvec3 c = glm::cross(a, b);
+        double len = glm::length(c);
+        if (len > 0) sum += std::atan2(len, glm::dot(a, b)) * glm::dot(n, c) / len;
+    }
+    return 0.5 * std::abs(sum);
+}
+
 }  // namespace brume

@@ -37,6 +37,17 @@ public:
     PatternHit patternHit(const Ray& ray, const SurfaceHit& hit) const {
         return PatternHit{hit.point, ray.dir, hit.normal, hit.t, hit.uv.x, hit.uv.y, scene_.objectFrame(hit.surface)};
     }
+    // The hit as a material sees it, for Material::scatter: materials with function files evaluate them on the
+    // hit as Radiance does after its flipsurface, the normal turned toward the ray (`functionHit` holds it).
+    Shading forMaterial(const Ray& ray, const SurfaceHit& hit, const Shading& sh, PatternHit& functionHit,
+                        PatternEvaluator& patterns) const {
+        functionHit = patternHit(ray, hit);
+        if (sh.backside) functionHit.normal = -functionHit.normal;
+        Shading at = sh;
+        at.hit = &functionHit;
+        at.evaluator = &patterns;
+        return at;
+    }
     // The colour of a source's patterns where a ray in direction `dir` meets it (e.g. a luminaire's intensity
     // distribution from ies2rad, or a sky's luminance distribution).
     Spectrum sourcePattern(const Light& light, const dvec3& point, const dvec3& normal, const dvec3& dir,

@@ -30,8 +30,10 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       shading_(scene),
       shadowRays_(scene, shading_, media_),
       lights_(scene, settings_, shading_, media_, shadowRays_),
+      portals_(scene, shading_, shadowRays_, settings_.skyPortals),
+      patches_(scene, shading_, shadowRays_, lights_, settings_.skyPortals),
       cache_(cache, settings_, *this, shading_, media_, seeds_),
-      surfaces_(scene, settings_, lights_, cache_, *this, roulette_),
+      surfaces_(scene, settings_, lights_, portals_, patches_, cache_, *this, roulette_),
       mediaTransport_(scene, settings_, media_, lights_, *this, roulette_) {
     const Bounds3& extent = scene.geometry().extent();
     epsilon_ = 1e-7 * (extent.empty() ? 1.0 : glm::length(extent.hi - extent.lo));
@@ -208,15 +210,11 @@ Spectrum Integrator::shadeHit(const Ray& ray, const SurfaceHit& hit, const Shadi
     return scatterHit(ray, hit, sh, *scene_.material(mat), state, ctx, sourceShare);
 }
 
-// The value of a hit on a material. Materials with function files evaluate them on the hit as Radiance
-// does after its flipsurface: the normal turned toward the ray.
+// The value of a hit on a material.
 Spectrum Integrator::scatterHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const Material& m,
                                 const PathState& state, PathContext& ctx, Spectrum* sourceShare) const {
-    PatternHit functionHit = shading_.patternHit(ray, hit);
-    if (sh.backside) functionHit.normal = -functionHit.normal;
-    Shading at = sh;
-    at.hit = &functionHit;
-    at.evaluator = &ctx.scratch.patterns;
+    PatternHit functionHit;
+    Shading at = shading_.forMaterial(ray, hit, sh, functionHit, ctx.scratch.patterns);
     Lobes lobes;
     if (!m.scatter(at, lobes)) return passThrough(ray, hit, state, ctx, sourceShare);
     return surfaces_.shade(at, lobes, hit.surface, state, ctx, sourceShare) * lobes.incomingAttenuation;
@@ -260,7 +258,9 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, PathContext
             }
             if (RayOutputs* out = ctx.recording()) out->distantSource(light.object(), scene_.lightModifier(light), ray.dir);
             Spectrum le = emitted();
-            if (glows) return le;
+            if (glows) return state.kind == PathState::Kind::Sampled && state.skyNormal != dvec3(0)
+                                  ? le * float(portals_.rayShare(state.from, state.skyNormal, ray.dir, ctx.scratch))
+                                  : le;
             if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
             if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
             return sampledSourceShare(le, li, state, ray, nullptr, sourceShare);

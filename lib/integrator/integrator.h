@@ -18,6 +18,8 @@
 #include "integrator/media_transport.h"
 #include "integrator/settings.h"
 #include "integrator/shadow_rays.h"
+#include "integrator/sky_portals.h"
+#include "integrator/sun_patches.h"
 #include "integrator/surface_scattering.h"
 #include "integrator/tracer.h"
 #include "io/ray_record.h"
@@ -107,6 +109,8 @@ private:
     HitShading shading_;
     ShadowRays shadowRays_;
     LightSampler lights_;
+    SkyPortals portals_;
+    SunPatches patches_;
     CacheClient cache_;
     SurfaceScattering surfaces_;
     MediaTransport mediaTransport_;

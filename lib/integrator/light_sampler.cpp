@@ -34,6 +34,7 @@ bool LightSampler::samplesSource(const Light& light, const SurfaceId& surface) c
 
 void LightSampler::drawnFrom(PathState& child, const dvec3& from, double pdf, const PathState& parent) const {
     child.kind = PathState::Kind::Sampled;
+    child.skyNormal = dvec3(0);
     child.from = from;
     child.fromWeight = parent.weight;
     child.fromSubdivision = subdivision(parent);
@@ -53,10 +54,10 @@ double LightSampler::misWeight(const Light& light, const PathState& state, const
 // stratified shadow rays beat thousands of diffuse rays that rarely find a small source); lobes that are
 // also sampled by rays share it with them by the power heuristic.
 Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,
-                                PathContext& ctx) const {
+                                PathContext& ctx, const SourceShares* shares) const {
     const std::vector<Light>& lights = scene_.lights();
     if (state.ambientLevel > 0 && !at.sampledByRays())
-        if (auto one = oneSourceOf(at, surface, state, ctx)) return *one;
+        if (auto one = oneSourceOf(at, surface, state, ctx, shares)) return *one;
     // Diffuse light of uniform sources: their unoccluded value in closed form (see directFrom), and how
     // bright it is in all, for -dt.
     std::vector<double>& closedForm = ctx.scratch.perSource;
@@ -72,7 +73,9 @@ Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, c
     for (size_t i = 0; i < lights.size(); ++i) {
         if (!samplesSource(lights[i], surface)) continue;
         double share = closedForm[i] > 0 && total > 0 ? closedForm[i] * brightness(lights[i].emitter().radiance) / total : 1.0;
-        sum += directFrom(lights[i], closedForm[i], share, at, surface, state, ctx);
+        Spectrum part = directFrom(lights[i], closedForm[i], share, at, surface, state, ctx);
+        if (shares && !part.isBlack()) part *= float(shares->rayShare(lights[i], at, surface, state, ctx));
+        sum += part;
     }
     if (mirrorImagesOn()) sum += directViaMirrors(at, surface, state, ctx);
     return sum;
@@ -87,7 +90,8 @@ Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, c
 // lobe is also sampled by rays (their weights against sources assume every source sampled). Nullopt: fewer
 // than two sources to choose from.
 std::optional<Spectrum> LightSampler::oneSourceOf(const Scatterer& at, const SurfaceId& surface,
-                                                  const PathState& state, PathContext& ctx) const {
+                                                  const PathState& state, PathContext& ctx,
+                                                  const SourceShares* shares) const {
     const std::vector<Light>& lights = scene_.lights();
     std::vector<double>& guess = ctx.scratch.perSource;
     guess.assign(lights.size(), 0.0);
@@ -111,6 +115,7 @@ std::optional<Spectrum> LightSampler::oneSourceOf(const Scatterer& at, const Sur
     }
     double p = probability(chosen);
     Spectrum value = directFrom(lights[chosen], -1, 1.0, at, surface, state, ctx) * float(1 / p);
+    if (shares && !value.isBlack()) value *= float(shares->rayShare(lights[chosen], at, surface, state, ctx));
     if (mirrorImagesOn()) value += directViaMirrors(at, surface, state, ctx);
     return value;
 }

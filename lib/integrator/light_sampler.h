@@ -11,14 +11,30 @@
 
 namespace brume {
 
+// The share a source's light keeps where next-event estimation finds it at the end of a drawn ray whose
+// origin also aimed at that light by another route (SunPatches): 1 where nothing else counts it.
+class SourceShares {
+public:
+    virtual ~SourceShares() = default;
+    virtual double rayShare(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                            PathContext& ctx) const = 0;
+};
+
 class LightSampler {
 public:
     LightSampler(const RenderScene& scene, const RenderSettings& settings, const HitShading& shading,
                  const Media& media, const ShadowRays& shadowRays)
         : scene_(scene), settings_(settings), shading_(shading), media_(media), shadowRays_(shadowRays) {}
 
-    // The sources' light scattered toward the viewer by `at` (leaving `surface`, none in a medium).
-    Spectrum sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
+    // The sources' light scattered toward the viewer by `at` (leaving `surface`, none in a medium), each
+    // source's taking its share (`shares`, if given) where it is not found.
+    Spectrum sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
+                      const SourceShares* shares = nullptr) const;
+    // One source's light scattered toward the viewer by `at`.
+    Spectrum fromSource(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                        PathContext& ctx) const {
+        return directFrom(light, -1, 1.0, at, surface, state, ctx);
+    }
 
     // A ray drawn from a lobe at `from` with density `pdf`, child of `parent`: it remembers how next-event
     // estimation counted sources there, so that a source it meets takes only its share (misWeight).
@@ -35,7 +51,7 @@ private:
     int thresholdedCount(int count, double share) const;
     bool samplesSource(const Light& light, const SurfaceId& surface) const;
     std::optional<Spectrum> oneSourceOf(const Scatterer& at, const SurfaceId& surface, const PathState& state,
-                                        PathContext& ctx) const;
+                                        PathContext& ctx, const SourceShares* shares) const;
     Spectrum directFrom(const Light& light, double closedForm, double share, const Scatterer& at,
                         const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
     Spectrum directViaMirrors(const Scatterer& at, const SurfaceId& surface, const PathState& state,

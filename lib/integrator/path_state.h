@@ -58,6 +58,9 @@ struct PathState {
     // A sampled ray just reflected by this planar mirror: sources it meets now were reached by
     // next-event estimation through their mirror images.
     int viaMirror = -1;
+    // A cosine-distributed ray from a point (`from`) that also aimed at the sky through portals: that
+    // point's normal, for the share it keeps of the sky it meets (SkyPortals::rayShare); zero: all of it.
+    dvec3 skyNormal{0};
     // Antimatter volumes the ray is inside, which hide the surfaces they cut; mists it is inside.
     InsideVolumes clips, mists;
 };

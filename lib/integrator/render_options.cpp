@@ -39,6 +39,7 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
     addIntOption(t, "-ab", s.ambientBounces,
                  "ambient bounces (diffuse interreflections; with the cache, -aa > 0, past them by Russian roulette "
                  "unless -al+ or -av is given)");
+    t.addBool("-aP", s.skyPortals, "ambient portals: diffuse paths aim at the sky through windows too (Brume's)");
     t.addBool("-al", s.ambientLimit, "ambient limit: with the cache too, no light past -ab bounces (Radiance's)");
     addRealOption(t, "-aa", s.ambientAccuracy, "ambient accuracy: the irradiance cache's relative error (0: path tracing)");
     addIntOption(t, "-ar", s.ambientResolution, "ambient resolution");

@@ -35,6 +35,11 @@ public:
     const Spectrum* lambertian() const {
         return lobes_ && !lobes_->diffuse.isBlack() && !lobes_->fresnelDiffuse ? &lobes_->diffuse : nullptr;
     }
+    // A surface that only reflects diffusely (no specular, glossy or transmitting lobe).
+    bool onlyLambertian() const {
+        return lambertian() && lobes_->deltaCount == 0 && lobes_->glossy.isBlack() && lobes_->glossyTrans.isBlack() &&
+               lobes_->diffuseTrans.isBlack() && !lobes_->general;
+    }
     // The cosine between the surface's normal and l (0 in a medium, where there is no normal).
     double cosine(const dvec3& l) const { return surface_ ? glm::dot(surface_->normal, l) : 0.0; }
 

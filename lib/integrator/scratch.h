@@ -8,9 +8,16 @@
 
 #include "integrator/path_state.h"
 #include "pattern/pattern_evaluator.h"
+#include "sampling/spherical_polygon.h"
 #include "world/render_scene.h"
 
 namespace brume {
+
+// A portal as one point sees it: its share of the samples aimed at the sky, and its solid angle.
+struct PortalChoice {
+    double probability = 0;
+    SphericalPolygon view;
+};
 
 struct Scratch {
     explicit Scratch(const RenderScene& scene) : patterns(scene.modifiers()) {}
@@ -21,6 +28,7 @@ struct Scratch {
     InsideVolumes mistsAtLastStart;
     std::vector<double> perSource;                               // next-event estimation's value per source
     std::vector<std::pair<double, const Light*>> sourceGuesses;  // sources to draw distances toward in media
+    std::vector<PortalChoice> portals;                           // how a point sees each portal
 };
 
 }  // namespace brume

@@ -19,6 +19,7 @@ struct RenderSettings {
     int ambientSupersamples = 512;   // -as: Radiance's extra samples (Brume's records adapt otherwise: no effect)
     double ambientAccuracy = 0.1;    // -aa: the irradiance cache's relative error (0: no cache, path tracing)
     int ambientResolution = 256;     // -ar: the scene's size over the smallest record radius
+    bool skyPortals = true;          // -aP: path-traced diffuse light aims at the sky through windows too
     RecordShape::Kind cacheKind = RecordShape::Kind::Adaptive;  // -acache adaptive|classic
     std::string cacheFile;           // -af: where the cache's records are kept between runs (changes no value)
     int ambientWeight = 0;           // -aw (Radiance's weight of -av in its records: no effect)

@@ -4,6 +4,8 @@
 #pragma once
 #include "integrator/cache_client.h"
 #include "integrator/light_sampler.h"
+#include "integrator/sky_portals.h"
+#include "integrator/sun_patches.h"
 #include "integrator/tracer.h"
 
 namespace brume {
@@ -11,8 +13,10 @@ namespace brume {
 class SurfaceScattering {
 public:
     SurfaceScattering(const RenderScene& scene, const RenderSettings& settings, const LightSampler& lights,
-                      const CacheClient& cache, const Tracer& tracer, const RussianRoulette& roulette)
-        : scene_(scene), settings_(settings), lights_(lights), cache_(cache), tracer_(tracer), roulette_(roulette) {}
+                      const SkyPortals& portals, const SunPatches& patches, const CacheClient& cache,
+                      const Tracer& tracer, const RussianRoulette& roulette)
+        : scene_(scene), settings_(settings), lights_(lights), portals_(portals), patches_(patches), cache_(cache),
+          tracer_(tracer), roulette_(roulette) {}
 
     // The radiance the lobes at the hit scatter along −sh.dir (leaving `surface`). Sources that rays of a
     // sampled path meet through straight transmissions go to `sourceShare` (see Tracer::radiance).
@@ -30,6 +34,8 @@ private:
     const RenderScene& scene_;
     const RenderSettings& settings_;
     const LightSampler& lights_;
+    const SkyPortals& portals_;
+    const SunPatches& patches_;
     const CacheClient& cache_;
     const Tracer& tracer_;
     const RussianRoulette& roulette_;

@@ -1,6 +1,6 @@
 // For the integrator's unit tests: a Tracer that answers every ray with one radiance (a uniform surrounding),
 // the parts of an Integrator wired around it as Integrator's constructor wires them, and the arithmetic the
-// tests' tolerances need (means with their standard errors, quadrature over directions).
+// tests' tolerances need (means with their standard errors, quadrature over directions); a daylit room.
 #pragma once
 #include <gtest/gtest.h>
 
@@ -67,8 +67,10 @@ struct Parts {
           shading(scene.render),
           shadowRays(scene.render, shading, media),
           lights(scene.render, settings, shading, media, shadowRays),
+          portals(scene.render, shading, shadowRays, settings.skyPortals),
+          patches(scene.render, shading, shadowRays, lights, settings.skyPortals),
           cache(surfaceCache, settings, tracer, shading, media, Seeds{s.seed}),
-          surfaces(scene.render, settings, lights, cache, tracer, roulette),
+          surfaces(scene.render, settings, lights, portals, patches, cache, tracer, roulette),
           transport(scene.render, settings, media, lights, tracer, roulette),
           scratch(scene.render) {
         media.prepare(instant());
@@ -102,6 +104,8 @@ struct Parts {
     HitShading shading;
     ShadowRays shadowRays;
     LightSampler lights;
+    SkyPortals portals;
+    SunPatches patches;
     CacheClient cache;
     SurfaceScattering surfaces;
     MediaTransport transport;
@@ -145,6 +149,61 @@ inline double overDirections(const std::function<double(const dvec3&)>& f, const
         }
     }
     return sum * dTheta * dPhi;
+}
+
+// Daylit rooms. A 4 × 4 × 3 m room (x, y, z; every surface facing in) with a 2 × 1 m pane in its south wall (y = 0) and a
+// triangular one in its east wall (x = 4), under a uniform sky and a darker ground; `rho` is the walls'.
+inline std::string daylitRoom(double rho, const std::string& extra = "") {
+    char walls[128];
+    std::snprintf(walls, sizeof walls, "void plastic wall 0 0 5 %g %g %g 0 0\n", rho, rho, rho);
+    return std::string("void glow sky 0 0 4 2 2 2 0\nsky source dome 0 0 4 0 0 1 180\n"
+                       "void glow ground 0 0 4 .5 .5 .5 0\nground source below 0 0 4 0 0 -1 180\n"
+                       "void glass pane 0 0 3 .9 .9 .9\n") +
+           walls +
+           "wall polygon floor 0 0 12 0 0 0 4 0 0 4 4 0 0 4 0\n"
+           "wall polygon ceiling 0 0 12 0 0 3 0 4 3 4 4 3 4 0 3\n"
+           "wall polygon north 0 0 12 0 4 0 4 4 0 4 4 3 0 4 3\n"
+           "wall polygon west 0 0 12 0 0 0 0 4 0 0 4 3 0 0 3\n"
+           "wall polygon east_below 0 0 12 4 0 0 4 0 1 4 4 1 4 4 0\n"
+           "wall polygon east_above 0 0 12 4 0 2 4 0 3 4 4 3 4 4 2\n"
+           "wall polygon east_south 0 0 12 4 0 1 4 0 2 4 1 2 4 1 1\n"
+           "wall polygon east_north 0 0 12 4 3 1 4 3 2 4 4 2 4 4 1\n"
+           "wall polygon east_left 0 0 9 4 1 1 4 1 2 4 2 2\n"
+           "wall polygon east_right 0 0 9 4 2 2 4 3 2 4 3 1\n"
+           "wall polygon south_below 0 0 12 0 0 0 0 0 1 4 0 1 4 0 0\n"
+           "wall polygon south_above 0 0 12 0 0 2 0 0 3 4 0 3 4 0 2\n"
+           "wall polygon south_west 0 0 12 0 0 1 0 0 2 1 0 2 1 0 1\n"
+           "wall polygon south_east 0 0 12 3 0 1 3 0 2 4 0 2 4 0 1\n"
+           "pane polygon window 0 0 12 1 0 1 1 0 2 3 0 2 3 0 1\n"
+           "pane polygon east_window 0 0 9 4 3 1 4 2 2 4 1 1\n" +
+           extra;
+}
+
+inline RenderSettings daylitPathTracing(int bounces, int divisions, bool portals) {
+    RenderSettings s = test::fixedSeed();
+    s.ambientBounces = bounces;
+    s.ambientAccuracy = 0;
+    s.ambientDivisions = divisions;
+    s.skyPortals = portals;
+    return s;
+}
+
+struct Spread {
+    double mean, standardError, deviation;
+};
+
+// `runs` independent irradiance estimates at p facing n.
+inline Spread irradianceRuns(const std::string& text, const RenderSettings& s, const dvec3& p, const dvec3& n, int runs) {
+    test::TestScene scene(text);
+    Integrator integrator(scene.render, s);
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < runs; ++i) {
+        double e = test::irradiance(integrator, p, n, uint64_t(i)).value[0];
+        sum += e;
+        sum2 += e * e;
+    }
+    double mean = sum / runs, variance = std::max(0.0, sum2 / runs - mean * mean) * runs / (runs - 1);
+    return {mean, std::sqrt(variance / runs), std::sqrt(variance)};
 }
 
 }  // namespace brume::integrator_testing

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sampling/spherical_triangle.h"
+#include "geometry/polygon.h"
 #include "sampling/warp.h"
 
 namespace brume {
@@ -34,19 +34,6 @@ void circleOutline(const dvec3& centre, const dvec3& axis, double r, std::vector
     }
 }
 
-// A four-sided polygon whose corners make right angles, as a rectangle: most luminaires and windows are,
-// and one spherical rectangle samples them more evenly than two spherical triangles. Within 1e-9 of its
-// size, so that rectangles whose corners were rounded to 12 digits (xform's output) still count; the
-// rectangle sampled then differs from the polygon by that much, far below single-precision values.
-std::optional<Rectangle> asRectangle(const Polygon& poly) {
-    if (poly.vertices.size() != 4) return std::nullopt;
-    const auto& v = poly.vertices;
-    dvec3 ex = v[1] - v[0], ey = v[3] - v[0];
-    double scale = glm::dot(ex, ex) + glm::dot(ey, ey);
-    dvec3 gap = v[2] - (v[1] + ey);
-    if (std::abs(glm::dot(ex, ey)) > 1e-9 * scale || glm::dot(gap, gap) > 1e-18 * scale) return std::nullopt;
-    return Rectangle{v[0], ex, ey - glm::dot(ex, ey) / glm::dot(ex, ex) * ex};
-}
 }  // namespace
 
 Light::Light(const Surface& surface, SurfaceId id, const Emitter* emitter, bool patterned)
@@ -57,13 +44,7 @@ Light::Light(const Surface& surface, SurfaceId id, const Emitter* emitter, bool 
     else if (const auto* c = std::get_if<Cone>(shape_)) center_ = 0.5 * (c->base + c->top);
     else if (const auto* r = std::get_if<Ring>(shape_)) center_ = r->center;
     if (const auto* poly = std::get_if<Polygon>(shape_)) {
-        double sum = 0;
-        for (const auto& t : poly->triangles) {
-            const auto& v = poly->vertices;
-            sum += 0.5 * glm::length(glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]));
-            triangleCdf_.push_back(sum);
-        }
-        for (double& c : triangleCdf_) c /= sum;
+        points_ = PolygonPoints(*poly);
         for (const dvec3& v : poly->vertices) center_ += v / double(poly->vertices.size());
         rectangle_ = asRectangle(*poly);
     }
@@ -98,15 +79,7 @@ double Light::roughSolidAngle(const dvec3& p) const {
 
 void Light::pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const {
     if (const auto* poly = std::get_if<Polygon>(shape_)) {
-        size_t t = std::lower_bound(triangleCdf_.begin(), triangleCdf_.end(), u) - triangleCdf_.begin();
-        t = std::min(t, triangleCdf_.size() - 1);
-        double lo = t ? triangleCdf_[t - 1] : 0.0;
-        u = std::clamp((u - lo) / (triangleCdf_[t] - lo), 0.0, 1.0);  // reuse u within the triangle
-        double b0, b1;
-        uniformTriangle(u, v, b0, b1);
-        const auto& tri = poly->triangles[t];
-        const auto& vs = poly->vertices;
-        point = b0 * vs[tri[0]] + b1 * vs[tri[1]] + (1 - b0 - b1) * vs[tri[2]];
+        point = points_.at(u, v);
         normal = poly->normal;
     } else if (const auto* ring = std::get_if<Ring>(shape_)) {
         double r2in = ring->innerRadius * ring->innerRadius, r2out = ring->outerRadius * ring->outerRadius;
@@ -142,46 +115,17 @@ LightView Light::view(const dvec3& p) const {
     LightView v;
     v.point = p;
     const auto* poly = std::get_if<Polygon>(shape_);
-    if (!poly || poly->triangles.size() > LightView::kMaxTriangles) return v;
-    if (glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return v;
-    if (rectangle_) {
-        v.rectangle = SphericalRectangle(p, *rectangle_);
-        double total = v.rectangle.solidAngle();
-        v.solidAngle = total >= kMinSolidAngle && std::isfinite(total) ? total : 0;
-        return v;
-    }
-    double total = 0;
-    for (size_t i = 0; i < poly->triangles.size(); ++i) {
-        const auto& t = poly->triangles[i];
-        v.triangles[i] = SphericalTriangle(p, poly->vertices[t[0]], poly->vertices[t[1]], poly->vertices[t[2]]);
-        total += v.triangles[i].solidAngle();
-    }
+    if (!poly || glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return v;
+    v.polygon = SphericalPolygon(p, *poly, rectangle_);
+    double total = v.polygon.solidAngle();
     v.solidAngle = total >= kMinSolidAngle && std::isfinite(total) ? total : 0;
     return v;
 }
 
-// A direction toward the polygon's triangles: u picks one in proportion to its solid angle, then places
-// the sample within it.
-dvec3 Light::sampleTriangles(const LightView& view, double u, double v) const {
-    size_t n = std::get<Polygon>(*shape_).triangles.size(), i = 0;
-    double target = u * view.solidAngle, below = 0;
-    while (i + 1 < n && below + view.triangles[i].solidAngle() < target) below += view.triangles[i++].solidAngle();
-    double w = view.triangles[i].solidAngle();
-    return view.triangles[i].sample(w > 0 ? std::clamp((target - below) / w, 0.0, 1.0) : 0.0, v);
-}
-
 std::optional<LightSample> Light::sampleSolidAngle(const LightView& view, double u, double v) const {
     const auto& poly = std::get<Polygon>(*shape_);
-    dvec3 dir;
     double dist;
-    if (rectangle_) {
-        dvec3 toPoint = view.rectangle.sample(u, v) - view.point;
-        dist = glm::length(toPoint);
-        dir = toPoint / dist;
-    } else {
-        dir = sampleTriangles(view, u, v);
-        dist = poly.planeDistance(Ray(view.point, dir));
-    }
+    dvec3 dir = view.polygon.sample(u, v, dist);
     double cosLight = -glm::dot(poly.normal, dir);
     if (!(dist > 0) || cosLight <= 0) return std::nullopt;
     return LightSample{dir, dist, 1 / view.solidAngle, poly.normal};
@@ -217,28 +161,6 @@ std::optional<LightSample> Light::sampleShape(const LightView& view, double u, d
 
 namespace {
 
-// Lambert (1760): a uniform polygon of unit radiance gives a point of normal n the irradiance
-// ½ Σ γᵢ n·(rᵢ × rᵢ₊₁)/|rᵢ × rᵢ₊₁|, γᵢ the angle its edge i subtends; the polygon is first clipped to the
-// point's upper half-space.
-double lambertPolygon(const std::vector<dvec3>& vertices, const dvec3& p, const dvec3& n) {
-    thread_local std::vector<dvec3> clipped;  // a scratch per thread: every shading point asks, for every source
-    clipped.clear();
-    for (size_t i = 0; i < vertices.size(); ++i) {
-        dvec3 a = vertices[i] - p, b = vertices[(i + 1) % vertices.size()] - p;
-        double ha = glm::dot(a, n), hb = glm::dot(b, n);
-        if (ha >= 0) clipped.push_back(a);
-        if ((ha >= 0) != (hb >= 0)) clipped.push_back(a + (b - a) * (ha / (ha - hb)));
-    }
-    double sum = 0;
-    for (size_t i = 0; i < clipped.size(); ++i) {
-        dvec3 a = glm::normalize(clipped[i]), b = glm::normalize(clipped[(i + 1) % clipped.size()]);
-        dvec3 c = glm::cross(a, b);
-        double len = glm::length(c);
-        if (len > 0) sum += std::atan2(len, glm::dot(a, b)) * glm::dot(n, c) / len;
-    }
-    return 0.5 * std::abs(sum);
-}
-
 // A disc of angular radius α (1 − cos α given) whose centre is at angle β from the normal, wholly above
 // the horizon: π sin²α cos β.
 double capIrradiance(double oneMinusCosAlpha, double cosBeta) {
@@ -262,7 +184,7 @@ double Light::unoccludedIrradiance(const dvec3& p, const dvec3& n) const {
     if (isDistant()) return capIrradiance(oneMinusCos_, glm::dot(n, direction_));
     if (const auto* poly = std::get_if<Polygon>(shape_)) {
         if (glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return 0;  // behind its front
-        return lambertPolygon(poly->vertices, p, n);
+        return projectedSolidAngle(poly->vertices, p, n);
     }
     if (const auto* sphere = std::get_if<Sphere>(shape_)) {
         dvec3 toCenter = sphere->center - p;

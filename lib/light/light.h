@@ -7,8 +7,8 @@
 
 #include "geometry/surface.h"
 #include "light/emitter.h"
-#include "sampling/spherical_rectangle.h"
-#include "sampling/spherical_triangle.h"
+#include "sampling/polygon_points.h"
+#include "sampling/spherical_polygon.h"
 
 namespace brume {
 
@@ -23,10 +23,8 @@ struct LightSample {
 
 // A source as seen from one shading point: what sampling it there needs, computed once for all its samples.
 struct LightView {
-    static constexpr size_t kMaxTriangles = 8;  // polygons with more are sampled by area
     dvec3 point;
-    SphericalRectangle rectangle;  // rectangular polygons, else their triangles
-    SphericalTriangle triangles[kMaxTriangles];
+    SphericalPolygon polygon;  // of a polygon seen from its front
     double solidAngle = 0;  // > 0 when the polygon is sampled by solid angle
 };
 
@@ -77,7 +75,6 @@ private:
     std::optional<LightSample> sampleShape(const LightView& view, double u, double v) const;
     std::optional<LightSample> sampleArea(const dvec3& p, double u, double v) const;
     std::optional<LightSample> sampleSolidAngle(const LightView& view, double u, double v) const;
-    dvec3 sampleTriangles(const LightView& view, double u, double v) const;
     void pointOnSurface(double u, double v, dvec3& point, dvec3& normal) const;
 
     const Shape* shape_ = nullptr;
@@ -88,7 +85,7 @@ private:
     double area_ = 0;
     dvec3 center_{0};  // for the subdivision count
     double size_ = 0;
-    std::vector<double> triangleCdf_;  // polygons: cumulative area of their triangles
+    PolygonPoints points_;  // of polygons
     std::optional<Rectangle> rectangle_;  // polygons that are rectangles
     dvec3 direction_{0};               // distant
     double oneMinusCos_ = 0;           // distant: 1 − cos(half angle)

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "pattern/pattern_evaluator.h"
+#include "sampling/warp.h"
 
 namespace brume {
 
@@ -34,6 +35,7 @@ RenderScene::RenderScene(const Scene& scene, const MaterialSettings& settings) :
         objectFrames_.push_back({p.patternTransform, p.patternTransform.inverse()});
     addSources();
     addMirrors();
+    addPortals();
     addMists();
     addSmoke();
     findShadowBlockers();
@@ -166,6 +168,50 @@ void RenderScene::addMirrors() {
             mirrors_.push_back({SurfaceId{s}, ring->normal, glm::dot(ring->normal, ring->center), rho});
         }
     }
+}
+
+void RenderScene::addPortals() {
+    bool sky = std::any_of(distant_.begin(), distant_.end(), [&](int i) {
+        const Emitter& e = lights_[i].emitter();
+        return e.kind == Emitter::Kind::Glow && !e.radiance.isBlack();
+    });
+    if (!sky) return;
+    const auto& surfaces = geometry_->surfaces();
+    std::vector<bool> glazing(surfaces.size(), false);
+    for (int s = 0; s < geometry_->ownSurfaces(); ++s) {
+        int material = materialObject(SurfaceId{s});
+        glazing[s] = material >= 0 && !varies(SurfaceId{s}) && scene_.objects[material].type == "glass" &&
+                     std::holds_alternative<Polygon>(surfaces[s].shape);
+    }
+    for (int s = 0; s < geometry_->ownSurfaces(); ++s)
+        if (glazing[s] && leadsOutside(std::get<Polygon>(surfaces[s].shape), SurfaceId{s}, glazing))
+            portals_.emplace_back(std::get<Polygon>(surfaces[s].shape), SurfaceId{s});
+}
+
+// Whether rays from a pane's middle, straight out of either face or slanted 60° from it, escape the scene
+// through nothing but glazing: then it is a window, not a glass partition or a glass table top (which would
+// only waste the sky's samples; either way the estimate stays unbiased).
+bool RenderScene::leadsOutside(const Polygon& pane, const SurfaceId& id, const std::vector<bool>& glazing) const {
+    const auto& tri = pane.triangles.front();
+    dvec3 middle = (pane.vertices[tri[0]] + pane.vertices[tri[1]] + pane.vertices[tri[2]]) / 3.0;
+    constexpr int kSlants = 8;
+    for (double side : {1.0, -1.0}) {
+        Frame frame(side * pane.normal);
+        for (int k = 0; k <= kSlants; ++k) {
+            double phi = 2 * std::numbers::pi * k / kSlants, sinTheta = k == 0 ? 0 : std::sqrt(0.75);
+            dvec3 dir = frame.toWorld(dvec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), k == 0 ? 1 : 0.5));
+            Ray ray(middle, dir, std::numeric_limits<double>::infinity(), id);
+            for (int crossing = 0; crossing < 16; ++crossing) {
+                auto hit = geometry_->intersect(ray);
+                if (!hit) return true;
+                const SurfaceId& met = hit->surface;
+                if (met.instance >= 0 || met.surface < 0 || !glazing[met.surface]) break;
+                ray.org = hit->point;
+                ray.leaving = met;
+            }
+        }
+    }
+    return false;
 }
 
 int RenderScene::surfaceModifier(const SurfaceId& id) const {

@@ -9,6 +9,7 @@
 
 #include "world/scene_geometry.h"
 #include "light/light.h"
+#include "light/portal.h"
 #include "material/material.h"
 #include "medium/mist.h"
 #include "medium/smoke.h"
@@ -95,6 +96,9 @@ public:
     bool shadowsBend() const { return shadowsBend_; }
     // Distant sources hit by rays that escape the scene (lights, glows and illums on `source`).
     const std::vector<int>& distantLights() const { return distant_; }
+    // Clear glazing (flat `glass` of the scene's own) through which the sky or ground glows can be seen:
+    // windows for next-event estimation of the sky (none when there is no glow at infinity).
+    const std::vector<Portal>& portals() const { return portals_; }
 
 private:
     void checkTypes() const;
@@ -103,6 +107,8 @@ private:
     void addPlacedLights();
     void addAntimatter();
     void addMirrors();
+    void addPortals();
+    bool leadsOutside(const Polygon& pane, const SurfaceId& id, const std::vector<bool>& glazing) const;
     void addMists();
     void addSmoke();
     void findShadowBlockers();
@@ -122,6 +128,7 @@ private:
     std::vector<int> distant_;  // indices into lights_
     std::unordered_map<int, std::vector<int>> antimatter_;
     std::vector<PlanarMirror> mirrors_;
+    std::vector<Portal> portals_;
     std::unordered_map<int, Mist> mists_;
     std::vector<SmokeDescription> smoke_;
     std::vector<int> surfaceMirror_;  // index in mirrors_, or -1

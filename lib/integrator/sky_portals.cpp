@@ -1,0 +1,110 @@
+#include "integrator/sky_portals.h"
+
+#include "sampling/warp.h"
+
+namespace brume {
+
+using namespace integrator_detail;
+
+namespace {
+// Portals smaller than this (sr) seen from a point are left to rays there: their spherical triangles lose
+// precision, and little comes through them.
+constexpr double kMinSolidAngle = 1e-6;
+}  // namespace
+
+SkyPortals::SkyPortals(const RenderScene& scene, const HitShading& shading, const ShadowRays& shadowRays, bool enabled)
+    : scene_(scene), shading_(shading), shadowRays_(shadowRays), active_(enabled && !scene.portals().empty()) {}
+
+// In proportion to each portal's projected solid angle: the diffuse light an overcast sky would send through it.
+bool SkyPortals::choose(const dvec3& p, const dvec3& n, std::vector<PortalChoice>& choices) const {
+    const std::vector<Portal>& portals = scene_.portals();
+    choices.assign(portals.size(), PortalChoice{});
+    double total = 0;
+    for (size_t i = 0; i < portals.size(); ++i) {
+        choices[i].view = portals[i].view(p);
+        double solidAngle = choices[i].view.solidAngle();
+        if (!(solidAngle >= kMinSolidAngle) || !std::isfinite(solidAngle)) continue;
+        choices[i].probability = portals[i].projectedSolidAngle(p, n);
+        total += choices[i].probability;
+    }
+    if (!(total > 0)) return false;
+    for (PortalChoice& c : choices) c.probability /= total;
+    return true;
+}
+
+double SkyPortals::densityOf(const dvec3& p, const dvec3& dir, const std::vector<PortalChoice>& choices) const {
+    double pdf = 0;
+    for (size_t i = 0; i < choices.size(); ++i)
+        if (choices[i].probability > 0 && scene_.portals()[i].crossedBy(p, dir))
+            pdf += choices[i].probability / choices[i].view.solidAngle();
+    return pdf;
+}
+
+double SkyPortals::density(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const {
+    return active_ && choose(p, n, scratch.portals) ? densityOf(p, dir, scratch.portals) : 0;
+}
+
+double SkyPortals::rayShare(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const {
+    double aimed = density(p, n, dir, scratch);
+    return aimed > 0 ? powerHeuristic(std::max(0.0, glm::dot(n, dir)) / kPi, aimed) : 1.0;
+}
+
+Spectrum SkyPortals::skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns) const {
+    for (bool glows : {false, true})
+        for (int li : scene_.distantLights()) {
+            const Light& light = scene_.lights()[li];
+            if ((light.emitter().kind == Emitter::Kind::Glow) != glows || !light.distantContains(dir)) continue;
+            if (!glows) return Spectrum(0.f);
+            Spectrum le = light.emitter().emitted(-dir);
+            if (light.patterned()) le *= shading_.sourcePattern(light, p, -dir, dir, kDistantSourceDistance, patterns);
+            return le;
+        }
+    return Spectrum(0.f);
+}
+
+// u picks a portal by its probability, then is reused within it: strata stay strata.
+dvec3 SkyPortals::aimAt(const std::vector<PortalChoice>& choices, double u, double v) {
+    size_t i = 0;
+    double below = 0;
+    for (size_t j = 0; j < choices.size(); ++j) {
+        if (choices[j].probability <= 0) continue;
+        i = j;
+        if (u < below + choices[j].probability) break;
+        below += choices[j].probability;
+    }
+    double distance;
+    return choices[i].view.sample(std::clamp((u - below) / choices[i].probability, 0.0, 1.0), v, distance);
+}
+
+std::optional<dvec3> SkyPortals::aim(const dvec3& p, const dvec3& n, double u, double v, Scratch& scratch) const {
+    if (!active_ || !choose(p, n, scratch.portals)) return std::nullopt;
+    return aimAt(scratch.portals, u, v);
+}
+
+Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
+                            PathContext& ctx) const {
+    std::vector<PortalChoice>& choices = ctx.scratch.portals;
+    if (!choose(p, n, choices)) return Spectrum(0.f);
+    uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    Spectrum sum(0.f);
+    for (int k = 0; k < count; ++k) {
+        double u, v;
+        sobol2D(k, scramble, u, v);
+        dvec3 dir = aimAt(choices, u, v);
+        double cosine = glm::dot(n, dir);
+        if (!(cosine > 0)) continue;
+        double pdf = densityOf(p, dir, choices);
+        if (!(pdf > 0)) continue;
+        PathState crossing = state;
+        Spectrum t = shadowRays_.toSurface(Ray{p, dir, std::numeric_limits<double>::infinity(), surface}, SurfaceId{},
+                                           true, Emitter::Kind::Glow, crossing, ctx, nullptr);
+        if (t.isBlack()) continue;
+        Spectrum le = skyToward(p, dir, ctx.scratch.patterns);
+        if (le.isBlack()) continue;
+        double weight = powerHeuristic(pdf, cosine / kPi);
+        sum += le * t * float(weight * cosine / (kPi * pdf));
+    }
+    return sum;
+}
+
+}  // namespace brume
