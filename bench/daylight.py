@@ -12,7 +12,7 @@ a rerun times only Brume (--rerun-radiance times them again).
 
     python3 bench/daylight.py --bin build/bin [--scenes office,deep] [--families ...] [--remake-reference]
 
-Standard library only; the plot (results/daylight_time_vs_error.png) is drawn when matplotlib is found.
+Standard library only; the plot (results/daylight_time_vs_error.png) is drawn by a Python that has matplotlib.
 """
 import argparse
 import hashlib
@@ -217,37 +217,39 @@ def table(results, noise):
     return "\n".join(out)
 
 
+PLOT_SCRIPT = """
+names, titles, target = d["names"], d["titles"], d["target"]
+scenes = list(d["results"])
+fig, axes = plt.subplots(1, len(scenes), figsize=(6.5 * len(scenes), 5), squeeze=False)
+for ax, scene in zip(axes[0], scenes):
+    fam = {}
+    for r in d["results"][scene]:
+        fam.setdefault(r[0], []).append(r)
+    for name, rs in fam.items():
+        rs = sorted(rs, key=lambda r: r[3])
+        k = names.index(name)
+        ax.loglog([r[3] for r in rs], [r[4] for r in rs], "-" if name.startswith("brume") else "--",
+                  marker="*osDv^"[k], color="C%d" % k, label=rs[0][1])
+    ax.axhline(d["noise"][scene], color="grey", lw=0.8, ls=":", label="reference's own error")
+    ax.axhline(target, color="red", lw=0.6, ls="-.", label="goal: %.0f %%" % target)
+    ax.set_title(titles[scene], fontsize=9)
+    ax.set_xlabel("CPU time, one thread (s)")
+    ax.set_ylabel("RMS relative error of illuminance (%)")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=7)
+fig.suptitle("Daylit rooms: time against error (Brume solid, Radiance 6.1 dashed)")
+fig.tight_layout()
+fig.savefig(sys.argv[2], dpi=100)
+"""
+
+
 def plot(results, noise, png):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("daylight: no matplotlib here: no plot (Debian's python3-matplotlib draws it)")
-        return
-    scenes = list(results)
-    fig, axes = plt.subplots(1, len(scenes), figsize=(6.5 * len(scenes), 5), squeeze=False)
-    names = [f[0] for f in FAMILIES]
-    for ax, scene in zip(axes[0], scenes):
-        fam = {}
-        for r in results[scene]:
-            fam.setdefault(r[0], []).append(r)
-        for name, rs in fam.items():
-            rs = sorted(rs, key=lambda r: r[3])
-            k = names.index(name)
-            ax.loglog([r[3] for r in rs], [r[4] for r in rs], "-" if name.startswith("brume") else "--",
-                      marker="*osDv^"[k], color="C%d" % k, label=rs[0][1])
-        ax.axhline(noise[scene], color="grey", lw=0.8, ls=":", label="reference's own error")
-        ax.axhline(TARGET_RMS, color="red", lw=0.6, ls="-.", label="goal: %.0f %%" % TARGET_RMS)
-        ax.set_title(SCENES[scene]["title"], fontsize=9)
-        ax.set_xlabel("CPU time, one thread (s)")
-        ax.set_ylabel("RMS relative error of illuminance (%)")
-        ax.grid(True, which="both", lw=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle("Daylit rooms: time against error (Brume solid, Radiance 6.1 dashed)")
-    fig.tight_layout()
-    fig.savefig(png, dpi=100)
-    print("daylight: plot in %s" % os.path.relpath(png, ROOT))
+    data = {"results": results, "noise": noise, "names": [f[0] for f in FAMILIES], "target": TARGET_RMS,
+            "titles": {s: SCENES[s]["title"] for s in results}}
+    if bench.matplotlib_plot(PLOT_SCRIPT, data, png):
+        print("daylight: plot in %s" % os.path.relpath(png, ROOT))
+    else:
+        print("daylight: no matplotlib: no plot (Debian's python3-matplotlib draws it)", file=sys.stderr)
 
 
 def main():

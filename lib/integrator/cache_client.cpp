@@ -28,6 +28,8 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
     child.from = point;
     child.fromWeight = q.weight;
     child.depth = 1;
+    bool aims = portals_.active();
+    if (aims) child.skyNormal = *q.at.normal;
     for (int j = 0; j < samples.rows(); ++j) {
         for (int k = 0; k < samples.columns(); ++k) {
             dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());
@@ -38,6 +40,13 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
         }
     }
     SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
+    if (aims) {
+        int count = samples.rows() * samples.columns();
+        Spectrum aimed = portals_.sample(point, *q.at.normal, q.leaving, count, child, ctx) +
+                         patches_.sample(point, *q.at.normal, q.leaving, count, child, ctx);
+        record.setField(SurfaceRecord::kIrradiance,
+                        record.field(SurfaceRecord::kIrradiance) + aimed * float(integrator_detail::kPi / count));
+    }
     record.time = q.at.time;
     return record;
 }

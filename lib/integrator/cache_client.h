@@ -5,6 +5,8 @@
 #include "integrator/hit_shading.h"
 #include "integrator/media.h"
 #include "integrator/settings.h"
+#include "integrator/sky_portals.h"
+#include "integrator/sun_patches.h"
 #include "integrator/tracer.h"
 
 namespace brume {
@@ -13,8 +15,10 @@ class CacheClient {
 public:
     // `cache` may be null (no cache: -ab or -aa 0); `seeds` seed the records' rays by their requests' keys.
     CacheClient(const SurfaceCache* cache, const RenderSettings& settings, const Tracer& tracer,
-                const HitShading& shading, const Media& media, Seeds seeds)
-        : cache_(cache), settings_(settings), tracer_(tracer), shading_(shading), media_(media), seeds_(seeds) {}
+                const HitShading& shading, const Media& media, const SkyPortals& portals, const SunPatches& patches,
+                Seeds seeds)
+        : cache_(cache), settings_(settings), tracer_(tracer), shading_(shading), media_(media), portals_(portals),
+          patches_(patches), seeds_(seeds) {}
 
     const SurfaceCache* cache() const { return cache_; }
     // The indirect irradiance at a diffuse shading point from the records (true). Where there is none, the
@@ -38,8 +42,10 @@ public:
         return request.at.level == 0 ? 1 : std::max(1, recordDivisions(request));
     }
     // A record: the radiance of stratified rays over the hemisphere, each continuing one bounce deeper (where
-    // the cache, or paths, give the light of further bounces). Sources these rays meet are left out: records
-    // hold indirect light, next-event estimation gives the direct. Their own misses go to `visit`.
+    // the cache, or paths, give the light of further bounces), and as many samples aimed at the sky through
+    // the windows and at the sun's patches (SkyPortals, SunPatches; only the irradiance takes them, the
+    // gradients and zone come from the rays). Sources these rays meet are left out: records hold indirect
+    // light, next-event estimation gives the direct. Their own misses go to `visit`.
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
 private:
@@ -50,6 +56,8 @@ private:
     const Tracer& tracer_;
     const HitShading& shading_;
     const Media& media_;
+    const SkyPortals& portals_;
+    const SunPatches& patches_;
     Seeds seeds_;
 };
 

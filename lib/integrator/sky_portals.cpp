@@ -15,16 +15,24 @@ constexpr double kMinSolidAngle = 1e-6;
 SkyPortals::SkyPortals(const RenderScene& scene, const HitShading& shading, const ShadowRays& shadowRays, bool enabled)
     : scene_(scene), shading_(shading), shadowRays_(shadowRays), active_(enabled && !scene.portals().empty()) {}
 
-// In proportion to each portal's projected solid angle: the diffuse light an overcast sky would send through it.
+// In proportion to each portal's projected solid angle: the diffuse light an overcast sky would send through
+// it. One portal in view takes every sample, whatever its projection (samples below p's horizon then count
+// nothing, as no ray goes there).
 bool SkyPortals::choose(const dvec3& p, const dvec3& n, std::vector<PortalChoice>& choices) const {
     const std::vector<Portal>& portals = scene_.portals();
     choices.assign(portals.size(), PortalChoice{});
-    double total = 0;
+    int inView = 0;
     for (size_t i = 0; i < portals.size(); ++i) {
         choices[i].view = portals[i].view(p);
         double solidAngle = choices[i].view.solidAngle();
-        if (!(solidAngle >= kMinSolidAngle) || !std::isfinite(solidAngle)) continue;
-        choices[i].probability = portals[i].projectedSolidAngle(p, n);
+        bool sampled = solidAngle >= kMinSolidAngle && std::isfinite(solidAngle);
+        choices[i].probability = sampled ? 1 : 0;
+        inView += sampled;
+    }
+    if (inView < 2) return inView == 1;
+    double total = 0;
+    for (size_t i = 0; i < portals.size(); ++i) {
+        if (choices[i].probability > 0) choices[i].probability = portals[i].projectedSolidAngle(p, n);
         total += choices[i].probability;
     }
     if (!(total > 0)) return false;
