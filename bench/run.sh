@@ -5,7 +5,8 @@
 # error of the irradiance caches) takes --remake-reference and --rerun-radiance, and is left out with --skip-cache;
 # spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral; smoke.py
 # (time against error through FDS soot, with and without empty-space skipping) takes --repeat and is left out
-# with --skip-smoke.
+# with --skip-smoke; daylight.py (daylit rooms' sensor grids against Radiance) takes --remake-reference and
+# --rerun-radiance, and is left out with --skip-daylight.
 set -euo pipefail
 bin=${1:-build/bin}
 shift || true
@@ -15,19 +16,22 @@ skip_rpict=0
 skip_cache=0
 skip_spectral=0
 skip_smoke=0
+skip_daylight=0
 bench_args=()
 rpict_args=()
 cache_args=()
 spectral_args=()
 smoke_args=()
+daylight_args=()
 while (($#)); do
     case $1 in
         --skip-rpict) skip_rpict=1 ;;
         --skip-cache) skip_cache=1 ;;
         --skip-spectral) skip_spectral=1 ;;
         --skip-smoke) skip_smoke=1 ;;
-        --rerun-radiance) cache_args+=("$1") ;;
-        --remake-reference) bench_args+=("$1"); rpict_args+=("$1"); cache_args+=("$1") ;;
+        --skip-daylight) skip_daylight=1 ;;
+        --rerun-radiance) cache_args+=("$1"); daylight_args+=("$1") ;;
+        --remake-reference) bench_args+=("$1"); rpict_args+=("$1"); cache_args+=("$1"); daylight_args+=("$1") ;;
         --repeat) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); spectral_args+=("$1" "$2"); smoke_args+=("$1" "$2"); shift ;;
         --threads) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); shift ;;
         *) bench_args+=("$1") ;;
@@ -50,4 +54,8 @@ fi
 if ((!skip_smoke)); then
     echo
     python3 "$here/smoke.py" --bin "$bin" "${smoke_args[@]}"
+fi
+if ((!skip_daylight)); then
+    echo
+    python3 "$here/daylight.py" --bin "$bin" "${daylight_args[@]}"
 fi
