@@ -2,8 +2,10 @@
 """Daylit rooms: illuminance on sensor grids against time, Brume against Radiance 6.1, one thread each.
 
 Scenes (each a room lit through glazing by a gensky sky and its ground, see bench/README.md, "Daylit rooms"):
-  office  examples/office/office.rad with examples/office/sky.rad (CIE overcast, its six luminaires on), 96 sensors
-  deep    bench/daylight/deep.rad: a 10 m deep side-lit room, clear sky and sun making a patch on the floor, 114 sensors
+  office      examples/office/office.rad with examples/office/sky.rad (CIE overcast, its six luminaires on), 96 sensors
+  deep        bench/daylight/deep.rad: a 10 m deep side-lit room, clear sky and sun making a patch on the floor, 114
+  clerestory  bench/daylight/clerestory.rad: a band of glazing high in one wall, overcast sky, 48 sensors
+  atrium      bench/daylight/atrium.rad: a 12 m atrium under a skylight, clear sky and sun, 49 sensors
 
 Every rung is timed (CPU time, one thread) and compared with the scene's converged reference
 (bench/results/daylight_reference_<scene>.txt: the mean of independent path-traced runs, with each sensor's
@@ -42,6 +44,10 @@ SCENES = {
                "title": "office, overcast sky through a 4 m window, 96 sensors"},
     "deep": {"files": ["bench/daylight/deep.rad"], "grid": "bench/daylight/deep_grid.txt",
              "title": "deep side-lit room, clear sky and a sun patch, 114 sensors"},
+    "clerestory": {"files": ["bench/daylight/clerestory.rad"], "grid": "bench/daylight/clerestory_grid.txt",
+                   "title": "room lit by a clerestory, overcast sky, 48 sensors"},
+    "atrium": {"files": ["bench/daylight/atrium.rad"], "grid": "bench/daylight/atrium_grid.txt",
+               "title": "12 m atrium under a skylight, clear sky and sun, 49 sensors"},
 }
 
 # The reference: path tracing with every bounce (Russian roulette ends the paths; -ab 50 is never reached), the
@@ -220,8 +226,10 @@ def table(results, noise):
 PLOT_SCRIPT = """
 names, titles, target = d["names"], d["titles"], d["target"]
 scenes = list(d["results"])
-fig, axes = plt.subplots(1, len(scenes), figsize=(6.5 * len(scenes), 5), squeeze=False)
-for ax, scene in zip(axes[0], scenes):
+columns = min(2, len(scenes))
+rows = (len(scenes) + columns - 1) // columns
+fig, axes = plt.subplots(rows, columns, figsize=(6.5 * columns, 5 * rows), squeeze=False)
+for ax, scene in zip(axes.flat, scenes):
     fam = {}
     for r in d["results"][scene]:
         fam.setdefault(r[0], []).append(r)

@@ -1,5 +1,6 @@
 // The light a record is made from: radiance and distance seen along stratified, cosine-distributed
-// directions over a point's hemisphere (Ward & Heckbert 1992's M rows in θ by N columns in φ).
+// directions over a point's hemisphere (Ward & Heckbert 1992's M rows in θ by N columns in φ), and samples
+// aimed at known light besides them.
 #pragma once
 #include <cmath>
 #include <limits>
@@ -10,6 +11,15 @@
 #include "spectrum/spectrum.h"
 
 namespace brume {
+
+// A sample aimed at known light rather than drawn over the hemisphere (the sky through a window, a sun
+// patch): its direction, the irradiance it adds to the record's, and how far along it that light comes
+// from (the window, where the sky's light is cut off; the patch).
+struct AimedSample {
+    dvec3 dir;
+    Spectrum irradiance;
+    double distance;
+};
 
 class HemisphereSamples {
 public:
@@ -53,6 +63,9 @@ public:
     double distance(int index) const { return distance_[index]; }
     const dvec3& direction(int index) const { return direction_[index]; }
 
+    std::vector<AimedSample>& aimed() { return aimed_; }
+    const std::vector<AimedSample>& aimed() const { return aimed_; }
+
 private:
     dvec3 point_;
     Frame frame_;
@@ -61,6 +74,7 @@ private:
     std::vector<float> radiance_;
     std::vector<double> distance_;
     std::vector<dvec3> direction_;
+    std::vector<AimedSample> aimed_;
 };
 
 }  // namespace brume

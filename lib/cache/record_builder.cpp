@@ -36,6 +36,19 @@ Measured measure(const HemisphereSamples& hs) {
             m.tilt[c].y += cell * l * ty;
         }
     }
+    // Aimed samples as equivalent point sources: tilting the normal scales each by cos θ, moving the point
+    // changes I cos θ / d² by 3E (ω·s)/d along the tangent s.
+    for (const AimedSample& a : hs.aimed()) {
+        double cosTheta = std::max(glm::dot(a.dir, hs.frame().n), 1e-3);
+        Tangent toward{glm::dot(a.dir, hs.frame().s), glm::dot(a.dir, hs.frame().t)};
+        double perDistance = std::isfinite(a.distance) && a.distance > 0 ? 3 / a.distance : 0;
+        for (int c = 0; c < ch; ++c) {
+            double e = a.irradiance[c];
+            m.irradiance[c] += e;
+            m.tilt[c].x += e * toward.x / cosTheta, m.tilt[c].y += e * toward.y / cosTheta;
+            m.along[c].x += e * toward.x * perDistance, m.along[c].y += e * toward.y * perDistance;
+        }
+    }
     auto nearer = [&](int a, int b) { return std::min(hs.distance(a), hs.distance(b)); };
     for (int k = 0; k < cols; ++k) {
         double phiMid = kPi * (2 * k + 1) / cols, phiEdge = hs.phiEdge(k);
@@ -84,46 +97,46 @@ struct Symmetric2 {
 // I cos θ / d² as the point moves, 3E_i/d² · (|5 sin²θ − 1| along the source's direction, 1 across it).
 Symmetric2 curvatureBound(const HemisphereSamples& hs) {
     Symmetric2 h;
-    const double cell = kPi / hs.count();
-    for (int i = 0; i < hs.count(); ++i) {
-        double d = hs.distance(i);
-        if (!std::isfinite(d)) continue;
-        const dvec3& dir = hs.direction(i);
+    auto add = [&](const dvec3& dir, double e, double d) {
+        if (!std::isfinite(d)) return;
         Tangent t{glm::dot(dir, hs.frame().s), glm::dot(dir, hs.frame().t)};
-        double sin2 = t.x * t.x + t.y * t.y, e = cell * hs.brightness(i);
+        double sin2 = t.x * t.x + t.y * t.y;
         double w = 3 * e / (d * d);
         if (sin2 < 1e-12) {
             h.a += w * 4, h.c += w * 4;  // overhead: 5 sin²θ − 1 = −1 both ways
-            continue;
+            return;
         }
         double s = std::sqrt(sin2);
         Tangent along{t.x / s, t.y / s}, across{-along.y, along.x};
         h.addOuter(along, w * std::abs(5 * sin2 - 1));
         h.addOuter(across, w);
-    }
+    };
+    const double cell = kPi / hs.count();
+    for (int i = 0; i < hs.count(); ++i) add(hs.direction(i), cell * hs.brightness(i), hs.distance(i));
+    for (const AimedSample& a : hs.aimed()) add(a.dir, brightness(a.irradiance), a.distance);
     return h;
 }
 
 // What the equivalent point sources predict at `p`, a point of the record's plane: they keep their
 // intensities and positions; their distance and angle change.
 double predicted(const HemisphereSamples& hs, const dvec3& p) {
-    const double cell = kPi / hs.count();
     const dvec3& n = hs.frame().n;
     double sum = 0;
-    for (int i = 0; i < hs.count(); ++i) {
-        double e = cell * hs.brightness(i), d = hs.distance(i);
+    auto add = [&](const dvec3& dir, double e, double d) {
         if (!std::isfinite(d)) {
             sum += e;
-            continue;
+            return;
         }
-        const dvec3& dir = hs.direction(i);
         double cosTheta = glm::dot(dir, n);
-        if (cosTheta <= 1e-6) continue;
+        if (cosTheta <= 1e-6) return;
         double intensity = e * d * d / cosTheta;
         dvec3 to = hs.point() + d * dir - p;
         double len2 = glm::dot(to, to), along = glm::dot(to, n);
         if (along > 0 && len2 > 0) sum += intensity * along / (len2 * std::sqrt(len2));
-    }
+    };
+    const double cell = kPi / hs.count();
+    for (int i = 0; i < hs.count(); ++i) add(hs.direction(i), cell * hs.brightness(i), hs.distance(i));
+    for (const AimedSample& a : hs.aimed()) add(a.dir, brightness(a.irradiance), a.distance);
     return sum;
 }
 

@@ -130,3 +130,25 @@ TEST(RecordBuilder, ZonesShortenWhereTheEquivalentSourcesDisagree) {
     EXPECT_LT(r.radius[0], 0.3);  // well under the distance to the patch's edge
     EXPECT_GT(r.radius[0], 0);
 }
+
+// An aimed sample is an equivalent point source: under a dark hemisphere, a lamp's irradiance E at distance d
+// along ω (θ from the normal) adds E to the record, moves it by 3E(ω·s)/d along the tangent s (∂/∂x of
+// I cos θ / d²) and tilts it by E tan θ; and its closeness shrinks the zone, which rays alone would leave
+// at its largest.
+TEST(RecordBuilder, AimedSamplesCountAsEquivalentPointSources) {
+    auto dark = [](const dvec3&, const dvec3&) { return std::pair{0.0, std::numeric_limits<double>::infinity()}; };
+    HemisphereSamples hs = sample(dvec3(0), dvec3(0, 0, 1), 256, dark);
+    SurfaceRecord without = buildRecord(hs, shape(), 0);
+    const double theta = 0.5, d = 0.8, e = 3;
+    dvec3 omega(std::sin(theta), 0, std::cos(theta));
+    hs.aimed().push_back({omega, Spectrum(float(e)), d});
+    SurfaceRecord r = buildRecord(hs, shape(), 0);
+    EXPECT_NEAR(r.value(SurfaceRecord::kIrradiance, 0), e, 1e-5);
+    dvec3 along = double(r.value(SurfaceRecord::kAlongK1, 0)) * r.axis + double(r.value(SurfaceRecord::kAlongK2, 0)) * r.axis2();
+    dvec3 tilt = double(r.value(SurfaceRecord::kTiltK1, 0)) * r.axis + double(r.value(SurfaceRecord::kTiltK2, 0)) * r.axis2();
+    EXPECT_NEAR(along.x, 3 * e * std::sin(theta) / d, 1e-4);
+    EXPECT_NEAR(along.y, 0, 1e-5);
+    EXPECT_NEAR(tilt.x, e * std::tan(theta), 1e-4);
+    EXPECT_FLOAT_EQ(without.radius[0], 10);
+    EXPECT_LT(std::max(r.radius[0], r.radius[1]), d);
+}

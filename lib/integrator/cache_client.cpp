@@ -39,14 +39,11 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
             samples.set(samples.cell(j, k), dir, l.clampFinite(), hit.firstLength);
         }
     }
-    SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
     if (aims) {
-        int count = samples.rows() * samples.columns();
-        Spectrum aimed = portals_.sample(point, *q.at.normal, q.leaving, count, child, ctx) +
-                         patches_.sample(point, *q.at.normal, q.leaving, count, child, ctx);
-        record.setField(SurfaceRecord::kIrradiance,
-                        record.field(SurfaceRecord::kIrradiance) + aimed * float(integrator_detail::kPi / count));
+        portals_.sample(point, *q.at.normal, q.leaving, samples.count(), child, ctx, &samples.aimed());
+        patches_.sample(point, *q.at.normal, q.leaving, samples.count(), child, ctx, &samples.aimed());
     }
+    SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
     record.time = q.at.time;
     return record;
 }

@@ -43,8 +43,8 @@ public:
     }
     // A record: the radiance of stratified rays over the hemisphere, each continuing one bounce deeper (where
     // the cache, or paths, give the light of further bounces), and as many samples aimed at the sky through
-    // the windows and at the sun's patches (SkyPortals, SunPatches; only the irradiance takes them, the
-    // gradients and zone come from the rays). Sources these rays meet are left out: records hold indirect
+    // the windows and at the sun's patches (SkyPortals, SunPatches), which count in the record's gradients
+    // and zone as equivalent point sources. Sources these rays meet are left out: records hold indirect
     // light, next-event estimation gives the direct. Their own misses go to `visit`.
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 

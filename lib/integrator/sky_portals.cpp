@@ -71,7 +71,7 @@ Spectrum SkyPortals::skyToward(const dvec3& p, const dvec3& dir, PatternEvaluato
 }
 
 // u picks a portal by its probability, then is reused within it: strata stay strata.
-dvec3 SkyPortals::aimAt(const std::vector<PortalChoice>& choices, double u, double v) {
+dvec3 SkyPortals::aimAt(const std::vector<PortalChoice>& choices, double u, double v, double& distance) {
     size_t i = 0;
     double below = 0;
     for (size_t j = 0; j < choices.size(); ++j) {
@@ -80,17 +80,17 @@ dvec3 SkyPortals::aimAt(const std::vector<PortalChoice>& choices, double u, doub
         if (u < below + choices[j].probability) break;
         below += choices[j].probability;
     }
-    double distance;
     return choices[i].view.sample(std::clamp((u - below) / choices[i].probability, 0.0, 1.0), v, distance);
 }
 
 std::optional<dvec3> SkyPortals::aim(const dvec3& p, const dvec3& n, double u, double v, Scratch& scratch) const {
     if (!active_ || !choose(p, n, scratch.portals)) return std::nullopt;
-    return aimAt(scratch.portals, u, v);
+    double distance;
+    return aimAt(scratch.portals, u, v, distance);
 }
 
 Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
-                            PathContext& ctx) const {
+                            PathContext& ctx, std::vector<AimedSample>* aimed) const {
     std::vector<PortalChoice>& choices = ctx.scratch.portals;
     if (!choose(p, n, choices)) return Spectrum(0.f);
     uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
@@ -98,7 +98,8 @@ Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& sur
     for (int k = 0; k < count; ++k) {
         double u, v;
         sobol2D(k, scramble, u, v);
-        dvec3 dir = aimAt(choices, u, v);
+        double distance;
+        dvec3 dir = aimAt(choices, u, v, distance);
         double cosine = glm::dot(n, dir);
         if (!(cosine > 0)) continue;
         double pdf = densityOf(p, dir, choices);
@@ -109,8 +110,9 @@ Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& sur
         if (t.isBlack()) continue;
         Spectrum le = skyToward(p, dir, ctx.scratch.patterns);
         if (le.isBlack()) continue;
-        double weight = powerHeuristic(pdf, cosine / kPi);
-        sum += le * t * float(weight * cosine / (kPi * pdf));
+        Spectrum part = le * t * float(powerHeuristic(pdf, cosine / kPi) * cosine / (kPi * pdf));
+        sum += part;
+        if (aimed) aimed->push_back({dir, part * float(kPi / count), distance});
     }
     return sum;
 }

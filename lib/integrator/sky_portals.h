@@ -5,6 +5,7 @@
 // combined by multiple importance (the power heuristic): each direction counts once, the estimate stays
 // unbiased, and it is still the light Radiance's ambient rays gather — nothing at -ab 0. -aP- turns it off.
 #pragma once
+#include "cache/hemisphere_samples.h"
 #include "integrator/hit_shading.h"
 #include "integrator/path_context.h"
 #include "integrator/shadow_rays.h"
@@ -20,8 +21,9 @@ public:
     // Added to the radiance of `count` cosine-distributed rays from p (facing n, leaving `surface`): `count`
     // samples aimed at the portals, each the sky's radiance it meets × the transmission of the glazing it
     // crosses × its multiple-importance weight × cosθ/(π·pdf). `state`: the rays' (the volumes they are in).
+    // `aimed`, if given, receives each sample that brings light, with its share of the irradiance.
     Spectrum sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
-                    PathContext& ctx) const;
+                    PathContext& ctx, std::vector<AimedSample>* aimed = nullptr) const;
     // The share of the sky that a cosine-distributed ray from p (facing n) keeps where it escapes along dir.
     double rayShare(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const;
     // The density (per steradian) with which sample() aims from p, facing n, along unit dir.
@@ -34,7 +36,7 @@ private:
     // How p (facing n) sees each portal, into `choices`; false when it sees none it could aim at.
     bool choose(const dvec3& p, const dvec3& n, std::vector<PortalChoice>& choices) const;
     double densityOf(const dvec3& p, const dvec3& dir, const std::vector<PortalChoice>& choices) const;
-    static dvec3 aimAt(const std::vector<PortalChoice>& choices, double u, double v);
+    static dvec3 aimAt(const std::vector<PortalChoice>& choices, double u, double v, double& distance);
     // The radiance of the glow at infinity a ray escaping along dir meets; black where a source next-event
     // estimation samples (the sun) comes first, as Radiance orders them.
     Spectrum skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns) const;

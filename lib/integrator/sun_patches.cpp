@@ -98,7 +98,7 @@ std::optional<Spectrum> SunPatches::reflected(const Beam& beam, const SurfaceHit
 }
 
 Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
-                            PathContext& ctx) const {
+                            PathContext& ctx, std::vector<AimedSample>* aimed) const {
     Spectrum sum(0.f);
     for (const Beam& beam : beams_) {
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
@@ -128,7 +128,9 @@ Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& sur
             double weighed = density(beam, portals, shadingNormal) * distance * distance /
                              std::abs(glm::dot(shadingNormal, dir));
             if (!(pdf > 0) || !(weighed > 0)) continue;
-            sum += *le * t * float(powerHeuristic(weighed, cosX / kPi) * cosX / (kPi * pdf));
+            Spectrum part = *le * t * float(powerHeuristic(weighed, cosX / kPi) * cosX / (kPi * pdf));
+            sum += part;
+            if (aimed) aimed->push_back({dir, part * float(kPi / count), distance});
         }
     }
     return sum;

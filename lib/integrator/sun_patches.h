@@ -7,6 +7,7 @@
 // next-event estimation at the patch applies (rayShare). Unbiased either way; -aP- turns it off with the
 // portals. Sources that count: small distant ones (the sun, below kMaxAngle) shining through portals.
 #pragma once
+#include "cache/hemisphere_samples.h"
 #include "integrator/hit_shading.h"
 #include "integrator/light_sampler.h"
 #include "integrator/shadow_rays.h"
@@ -21,9 +22,10 @@ public:
     bool active() const { return !beams_.empty(); }
     // Added to the radiance of `count` cosine-distributed rays from x (facing n, leaving `surface`): `count`
     // connections to sunlit points per beam, each the point's reflected sunlight × its multiple-importance
-    // weight × cosθ/(π·pdf). `state`: the rays' (the volumes they are in, their bounce).
+    // weight × cosθ/(π·pdf). `state`: the rays' (the volumes they are in, their bounce). `aimed`, if given,
+    // receives each connection that brings light, with its share of the irradiance.
     Spectrum sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
-                    PathContext& ctx) const;
+                    PathContext& ctx, std::vector<AimedSample>* aimed = nullptr) const;
     double rayShare(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
                     PathContext& ctx) const override;
 
