@@ -30,6 +30,7 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
     child.depth = 1;
     bool aims = portals_.active();
     if (aims) child.skyNormal = *q.at.normal;
+    child.aimedPerRay = double(aimedCount(samples.count())) / samples.count();
     for (int j = 0; j < samples.rows(); ++j) {
         for (int k = 0; k < samples.columns(); ++k) {
             dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());

@@ -60,7 +60,9 @@ struct PathState {
     int viaMirror = -1;
     // A cosine-distributed ray from a point (`from`) that also aimed at the sky through portals: that
     // point's normal, for the share it keeps of the sky it meets (SkyPortals::rayShare); zero: all of it.
+    // `aimedPerRay`: how many samples aimed there per ray (see aimedCount).
     dvec3 skyNormal{0};
+    double aimedPerRay = 1;
     // Antimatter volumes the ray is inside, which hide the surfaces they cut; mists it is inside.
     InsideVolumes clips, mists;
 };

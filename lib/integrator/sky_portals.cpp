@@ -52,9 +52,10 @@ double SkyPortals::density(const dvec3& p, const dvec3& n, const dvec3& dir, Scr
     return active_ && choose(p, n, scratch.portals) ? densityOf(p, dir, scratch.portals) : 0;
 }
 
-double SkyPortals::rayShare(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const {
+double SkyPortals::rayShare(const dvec3& p, const dvec3& n, double aimedPerRay, const dvec3& dir,
+                            Scratch& scratch) const {
     double aimed = density(p, n, dir, scratch);
-    return aimed > 0 ? powerHeuristic(std::max(0.0, glm::dot(n, dir)) / kPi, aimed) : 1.0;
+    return aimed > 0 ? powerHeuristic(std::max(0.0, glm::dot(n, dir)) / kPi, aimedPerRay * aimed) : 1.0;
 }
 
 Spectrum SkyPortals::skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns) const {
@@ -89,12 +90,14 @@ std::optional<dvec3> SkyPortals::aim(const dvec3& p, const dvec3& n, double u, d
     return aimAt(scratch.portals, u, v, distance);
 }
 
-Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
+Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
                             PathContext& ctx, std::vector<AimedSample>* aimed) const {
     std::vector<PortalChoice>& choices = ctx.scratch.portals;
     if (!choose(p, n, choices)) return Spectrum(0.f);
     uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
     Spectrum sum(0.f);
+    const int count = aimedCount(rays);
+    const double perRay = double(count) / rays;
     for (int k = 0; k < count; ++k) {
         double u, v;
         sobol2D(k, scramble, u, v);
@@ -110,9 +113,9 @@ Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& sur
         if (t.isBlack()) continue;
         Spectrum le = skyToward(p, dir, ctx.scratch.patterns);
         if (le.isBlack()) continue;
-        Spectrum part = le * t * float(powerHeuristic(pdf, cosine / kPi) * cosine / (kPi * pdf));
+        Spectrum part = le * t * float(powerHeuristic(perRay * pdf, cosine / kPi) * cosine / (kPi * pdf * perRay));
         sum += part;
-        if (aimed) aimed->push_back({dir, part * float(kPi / count), distance});
+        if (aimed) aimed->push_back({dir, part * float(kPi / rays), distance});
     }
     return sum;
 }

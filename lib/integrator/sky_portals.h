@@ -5,6 +5,8 @@
 // combined by multiple importance (the power heuristic): each direction counts once, the estimate stays
 // unbiased, and it is still the light Radiance's ambient rays gather — nothing at -ab 0. -aP- turns it off.
 #pragma once
+#include <algorithm>
+
 #include "cache/hemisphere_samples.h"
 #include "integrator/hit_shading.h"
 #include "integrator/path_context.h"
@@ -12,20 +14,28 @@
 
 namespace brume {
 
+// How many samples aim at the sky (and at the sun's patches) where `rays` cosine-distributed rays go out: a
+// quarter as many, one at least. Aimed samples are the costlier (a shadow ray through the glazing, the sky's
+// pattern; a patch's shading and its own shadow ray) and the less noisy; the multiple-importance weights
+// take the ratio (aimedPerRay).
+inline int aimedCount(int rays) { return std::max(1, rays / 4); }
+
 class SkyPortals {
 public:
     SkyPortals(const RenderScene& scene, const HitShading& shading, const ShadowRays& shadowRays, bool enabled);
 
     // Portals, and a sky or ground to see through them.
     bool active() const { return active_; }
-    // Added to the radiance of `count` cosine-distributed rays from p (facing n, leaving `surface`): `count`
-    // samples aimed at the portals, each the sky's radiance it meets × the transmission of the glazing it
-    // crosses × its multiple-importance weight × cosθ/(π·pdf). `state`: the rays' (the volumes they are in).
-    // `aimed`, if given, receives each sample that brings light, with its share of the irradiance.
-    Spectrum sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
+    // Added to the radiance of `rays` cosine-distributed rays from p (facing n, leaving `surface`):
+    // aimedCount(rays) samples aimed at the portals, each the sky's radiance it meets × the transmission of
+    // the glazing it crosses × its multiple-importance weight × cosθ/(π·pdf), scaled to `rays` samples.
+    // `state`: the rays' (the volumes they are in). `aimed`, if given, receives each sample that brings
+    // light, with its share of the irradiance.
+    Spectrum sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
                     PathContext& ctx, std::vector<AimedSample>* aimed = nullptr) const;
-    // The share of the sky that a cosine-distributed ray from p (facing n) keeps where it escapes along dir.
-    double rayShare(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const;
+    // The share of the sky that a cosine-distributed ray from p (facing n, where `aimedPerRay` samples aimed
+    // per ray) keeps where it escapes along dir.
+    double rayShare(const dvec3& p, const dvec3& n, double aimedPerRay, const dvec3& dir, Scratch& scratch) const;
     // The density (per steradian) with which sample() aims from p, facing n, along unit dir.
     double density(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const;
     // The direction sample() aims along from p, facing n, for (u, v) in the unit square; nullopt where p sees

@@ -97,9 +97,11 @@ std::optional<Spectrum> SunPatches::reflected(const Beam& beam, const SurfaceHit
     return lights_.fromSource(scene_.lights()[beam.light], patch, at.surface, there, ctx) * lobes.incomingAttenuation;
 }
 
-Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
+Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
                             PathContext& ctx, std::vector<AimedSample>* aimed) const {
     Spectrum sum(0.f);
+    const int count = aimedCount(rays);
+    const double perRay = double(count) / rays;
     for (const Beam& beam : beams_) {
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         for (int k = 0; k < count; ++k) {
@@ -128,9 +130,10 @@ Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& sur
             double weighed = density(beam, portals, shadingNormal) * distance * distance /
                              std::abs(glm::dot(shadingNormal, dir));
             if (!(pdf > 0) || !(weighed > 0)) continue;
-            Spectrum part = *le * t * float(powerHeuristic(weighed, cosX / kPi) * cosX / (kPi * pdf));
+            Spectrum part =
+                *le * t * float(powerHeuristic(perRay * weighed, cosX / kPi) * cosX / (kPi * pdf * perRay));
             sum += part;
-            if (aimed) aimed->push_back({dir, part * float(kPi / count), distance});
+            if (aimed) aimed->push_back({dir, part * float(kPi / rays), distance});
         }
     }
     return sum;
@@ -149,7 +152,7 @@ double SunPatches::rayShare(const Light& light, const Scatterer& at, const Surfa
     int portals = cosX > 0 && cosPatch > 0 ? portalsBefore(*beam, at.point(), surface) : 0;
     if (portals == 0) return 1;
     double weighed = density(*beam, portals, at.surface()->normal) * distance * distance / cosPatch;
-    return powerHeuristic(cosX / kPi, weighed);
+    return powerHeuristic(cosX / kPi, state.aimedPerRay * weighed);
 }
 
 std::optional<SurfaceHit> SunPatches::land(int light, double u, double v) const {

@@ -11,6 +11,7 @@
 #include "integrator/hit_shading.h"
 #include "integrator/light_sampler.h"
 #include "integrator/shadow_rays.h"
+#include "integrator/sky_portals.h"
 
 namespace brume {
 
@@ -20,11 +21,12 @@ public:
                const LightSampler& lights, bool enabled);
 
     bool active() const { return !beams_.empty(); }
-    // Added to the radiance of `count` cosine-distributed rays from x (facing n, leaving `surface`): `count`
-    // connections to sunlit points per beam, each the point's reflected sunlight × its multiple-importance
-    // weight × cosθ/(π·pdf). `state`: the rays' (the volumes they are in, their bounce). `aimed`, if given,
-    // receives each connection that brings light, with its share of the irradiance.
-    Spectrum sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int count, const PathState& state,
+    // Added to the radiance of `rays` cosine-distributed rays from x (facing n, leaving `surface`):
+    // aimedCount(rays) connections to sunlit points per beam, each the point's reflected sunlight × its
+    // multiple-importance weight × cosθ/(π·pdf), scaled to `rays` samples. `state`: the rays' (the volumes
+    // they are in, their bounce). `aimed`, if given, receives each connection that brings light, with its
+    // share of the irradiance.
+    Spectrum sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
                     PathContext& ctx, std::vector<AimedSample>* aimed = nullptr) const;
     double rayShare(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
                     PathContext& ctx) const override;

@@ -113,6 +113,7 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
         child.ambientLevel = state.ambientLevel + 1;
         child.from = sh.point;
         child.skyNormal = portals_.active() ? normal : dvec3(0);
+        child.aimedPerRay = double(aimedCount(count)) / count;
         Frame frame(normal);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         Spectrum paths(0.f);
