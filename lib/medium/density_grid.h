@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "geometry/bounds.h"
+#include "medium/voxel_grid.h"
 
 namespace brume {
 
@@ -21,28 +21,26 @@ class DensityGrid {
 public:
     // The float grid `name` of the .vdb file `path`. Errors are "path: what" and list the file's grids
     // when `name` is not one of them.
-    explicit DensityGrid(const std::string& path, const std::string& name = "density");
+    explicit DensityGrid(const std::string& path, const std::string& name = "density")
+        : voxels_(readVoxelGrid(path, name)) {}
+    explicit DensityGrid(std::shared_ptr<const VoxelGrid> voxels) : voxels_(std::move(voxels)) {}
 
     // Where the density can be non-zero: trilinear interpolation reaches one voxel beyond the centres of
     // the outermost active voxels (tiles included). Empty for an empty grid.
-    Bounds3 bounds() const;
+    Bounds3 bounds() const { return voxels_->bounds(); }
     // The density at world point p (0 outside bounds()).
-    double density(const dvec3& p) const;
+    double density(const dvec3& p) const { return voxels_->density(p); }
 
-    double maxDensity() const;
+    double maxDensity() const { return voxels_->maxDensity(); }
     // Voxels holding smoke, active tiles counted voxel by voxel.
-    std::uint64_t activeVoxelCount() const;
+    std::uint64_t activeVoxelCount() const { return voxels_->activeVoxelCount(); }
     // Bytes held by the tree (OpenVDB's count).
-    std::uint64_t memoryBytes() const;
+    std::uint64_t memoryBytes() const { return voxels_->memoryBytes(); }
 
-    // OpenVDB's side, complete in density_grid_vdb.h, which only lib/medium's .cpp files and tests include
-    // (OpenVDB's headers are heavy).
-    struct Voxels;
-    explicit DensityGrid(std::shared_ptr<const Voxels> voxels) : voxels_(std::move(voxels)) {}
-    const Voxels& voxels() const { return *voxels_; }
+    const VoxelGrid& voxels() const { return *voxels_; }
 
 private:
-    std::shared_ptr<const Voxels> voxels_;
+    std::shared_ptr<const VoxelGrid> voxels_;
 };
 
 }  // namespace brume

@@ -169,7 +169,7 @@ TEST(DensityGrid, Smoke1StatisticsAreTheFilesHalfFloatsIncluded) {
 TEST(DensityGrid, WdasCloudCountsItsTilesAndReadsDensityInThem) {
     BRUME_SHARED_GRID_OR_SKIP(path, "wdas_cloud_sixteenth.vdb");
     DensityGrid cloud(path);
-    const openvdb::FloatTree& tree = cloud.voxels().grid->tree();
+    const openvdb::FloatTree& tree = vdbOf(cloud).tree();
     EXPECT_EQ(cloud.activeVoxelCount(), 415642u);
     EXPECT_EQ(tree.activeLeafVoxelCount(), 349082u);  // a loader walking only leaves misses 66,560 voxels
     // Bounds from the transform (the file's "voxelsize" metadata, 0.0, is stale): centres ± 10/3.
@@ -180,7 +180,7 @@ TEST(DensityGrid, WdasCloudCountsItsTilesAndReadsDensityInThem) {
         if (!it.isTileValue()) continue;
         openvdb::CoordBBox box;
         it.getBoundingBox(box);
-        const openvdb::Vec3d centre = cloud.voxels().grid->indexToWorld(box.getCenter());
+        const openvdb::Vec3d centre = vdbOf(cloud).indexToWorld(box.getCenter());
         EXPECT_NEAR(cloud.density({centre.x(), centre.y(), centre.z()}), *it, 1e-6);
         ++tiles;
     }

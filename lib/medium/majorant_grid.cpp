@@ -4,20 +4,9 @@
 #include <algorithm>
 #include <glm/matrix.hpp>
 
-#include "medium/density_grid_vdb.h"
-
 namespace brume {
 
 namespace {
-
-// A linear OpenVDB transform as a matrix on column vectors (OpenVDB's matrices act on row vectors).
-glm::dmat4 worldFromIndex(const openvdb::math::Transform& transform) {
-    const openvdb::Mat4d m = transform.baseMap()->getAffineMap()->getMat4();
-    glm::dmat4 g;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) g[i][j] = m[i][j];
-    return g;
-}
 
 // An axis-aligned box mapped by an affine map, as the box around the image.
 struct Box {
@@ -30,26 +19,24 @@ struct Box {
 };
 
 // Where trilinear interpolation reads the voxels of index box `active`: one voxel beyond their centres.
-Box support(const openvdb::CoordBBox& active) {
-    const openvdb::Vec3d lo = active.min().asVec3d() - 1.0, hi = active.max().asVec3d() + 1.0;
-    return {dvec3(lo.x(), lo.y(), lo.z()), dvec3(hi.x(), hi.y(), hi.z())};
-}
+Box support(const IndexBox& active) { return {dvec3(active.lo) - 1.0, dvec3(active.hi) + 1.0}; }
 
 }  // namespace
 
 MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell, std::span<const double> weights) {
     if (grids.empty()) return;
-    const openvdb::math::Transform& reference = grids[0].voxels().grid->transform();
-    const glm::dmat4 referenceFromWorld = glm::inverse(worldFromIndex(reference));
+    const VoxelGrid& reference = grids[0].voxels();
+    const glm::dmat4 referenceFromWorld = glm::inverse(reference.worldFromIndex());
     // Each grid's index space to the first grid's; exactly the identity for frames sharing its transform.
     std::vector<glm::dmat4> referenceFromIndex;
     Box covered{dvec3(std::numeric_limits<double>::infinity()), dvec3(-std::numeric_limits<double>::infinity())};
     for (const DensityGrid& grid : grids) {
-        const openvdb::math::Transform& transform = grid.voxels().grid->transform();
-        referenceFromIndex.push_back(transform == reference ? glm::dmat4(1.0)
-                                                            : referenceFromWorld * worldFromIndex(transform));
-        if (grid.voxels().active.empty()) continue;
-        const Box b = support(grid.voxels().active).mapped(referenceFromIndex.back());
+        const VoxelGrid& voxels = grid.voxels();
+        referenceFromIndex.push_back(voxels.sameTransform(reference) ? glm::dmat4(1.0)
+                                                                     : referenceFromWorld * voxels.worldFromIndex());
+        const std::optional<IndexBox> active = voxels.activeBox();
+        if (!active) continue;
+        const Box b = support(*active).mapped(referenceFromIndex.back());
         covered = {glm::min(covered.lo, b.lo), glm::max(covered.hi, b.hi)};
     }
     if (!(covered.lo.x <= covered.hi.x)) return;  // every grid empty
@@ -105,10 +92,7 @@ MajorantGrid::MajorantGrid(std::span<const DensityGrid> grids, int voxelsPerCell
 // Rounding in the mapped boxes can only add a neighbouring cell, never miss one.
 std::vector<float> MajorantGrid::cellMaxima(const DensityGrid& grid, const glm::dmat4& cellFromIndex) const {
     std::vector<float> most(std::size_t(n_.x) * n_.y * n_.z, 0.0f);
-    openvdb::CoordBBox box;
-    for (auto it = grid.voxels().grid->tree().cbeginValueOn(); it; ++it) {
-        const float v = *it;
-        if (v <= 0 || !it.getBoundingBox(box)) continue;
+    grid.voxels().forEachActive([&](const IndexBox& box, float v) {
         const Box cells = support(box).mapped(cellFromIndex);
         const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor(cells.lo)), glm::ivec3(0), n_ - 1);
         const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::ceil(cells.hi)) - 1, glm::ivec3(0), n_ - 1);
@@ -118,7 +102,7 @@ std::vector<float> MajorantGrid::cellMaxima(const DensityGrid& grid, const glm::
                     float& m = most[index({i, j, k})];
                     m = std::max(m, v);
                 }
-    }
+    });
     return most;
 }
 
@@ -128,19 +112,12 @@ std::vector<float> MajorantGrid::cellMinima(const DensityGrid& grid, const std::
                                             const dvec3& origin) const {
     std::vector<float> least(most.size(), 0.0f);
     const int s = voxelsPerCell_;
-    auto accessor = grid.voxels().grid->getConstAccessor();
     for (int k = 0; k < n_.z; ++k)
         for (int j = 0; j < n_.y; ++j)
             for (int i = 0; i < n_.x; ++i) {
                 if (!(most[index({i, j, k})] > 0)) continue;
-                const openvdb::Coord lo(int(origin.x) + s * i - 1, int(origin.y) + s * j - 1, int(origin.z) + s * k - 1);
-                const openvdb::CoordBBox box(lo, lo.offsetBy(s + 2));
-                float m = std::numeric_limits<float>::infinity();
-                for (auto c = box.begin(); c && m > 0; ++c) {
-                    float v;
-                    m = accessor.probeValue(*c, v) ? std::min(m, v) : 0.0f;
-                }
-                least[index({i, j, k})] = std::max(0.0f, m);
+                const glm::ivec3 lo(int(origin.x) + s * i - 1, int(origin.y) + s * j - 1, int(origin.z) + s * k - 1);
+                least[index({i, j, k})] = grid.voxels().minimum({lo, lo + s + 2});
             }
     return least;
 }

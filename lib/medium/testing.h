@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <string>
 
-#include "medium/density_grid_vdb.h"
+#include "medium/density_grid.h"
+#include "medium/openvdb/openvdb_grid.h"
+#include "util/error.h"
 
 namespace brume::medium::testing {
 
@@ -30,8 +32,16 @@ inline openvdb::FloatGrid::Ptr boxGrid(openvdb::Coord lo, openvdb::Coord hi, flo
     return grid;
 }
 
+// `grid` made safe as a density, as read from a file (its warnings printed).
 inline DensityGrid densityOf(openvdb::FloatGrid::Ptr grid, const std::string& name = "test grid") {
-    return DensityGrid(std::make_shared<DensityGrid::Voxels>(std::move(grid), name));
+    std::vector<std::string> warnings;
+    auto voxels = std::make_shared<OpenVdbGrid>(std::move(grid), name, warnings);
+    for (const std::string& w : warnings) warn(w);
+    return DensityGrid(std::move(voxels));
+}
+// The OpenVDB tree behind a grid.
+inline const openvdb::FloatGrid& vdbOf(const DensityGrid& grid) {
+    return dynamic_cast<const OpenVdbGrid&>(grid.voxels()).grid();
 }
 
 // Writes `grid` as grid `name` of the .vdb file `path`.

@@ -1,0 +1,126 @@
+#include "medium/openvdb/openvdb_grid.h"
+
+#include <openvdb/io/File.h>
+#include <openvdb/tools/Interpolation.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace brume {
+
+namespace {
+IndexBox indexBox(const openvdb::CoordBBox& b) {
+    return {glm::ivec3(b.min().x(), b.min().y(), b.min().z()), glm::ivec3(b.max().x(), b.max().y(), b.max().z())};
+}
+}  // namespace
+
+openvdb::FloatGrid::Ptr readFloatGrid(const std::string& path, const std::string& name) {
+    openvdb::initialize();
+    openvdb::GridBase::Ptr grid;
+    try {
+        openvdb::io::File file(path);
+        file.open(/*delayLoad=*/false);  // every voxel is read anyway, to be cleaned
+        if (!file.hasGrid(name)) {
+            std::string names;
+            for (auto it = file.beginName(); it != file.endName(); ++it)
+                names += (names.empty() ? "\"" : ", \"") + it.gridName() + "\"";
+            throw Error(path + ": no grid \"" + name + "\" (" +
+                        (names.empty() ? "the file holds no grid" : "the file holds " + names) + ")");
+        }
+        grid = file.readGrid(name);
+    } catch (const openvdb::Exception& e) {
+        throw Error(path + ": " + e.what());
+    }
+    auto floats = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
+    if (!floats)
+        throw Error(path + ": grid \"" + name + "\" holds " + grid->valueType() + " values, not float densities");
+    return floats;
+}
+
+OpenVdbGrid::OpenVdbGrid(openvdb::FloatGrid::Ptr vdb, std::string source, std::vector<std::string>& warnings) {
+    if (vdb->getGridClass() == openvdb::GRID_LEVEL_SET) throw Error(source + " is a level set, not a density");
+    if (!vdb->transform().isLinear())
+        throw Error(source + " has a frustum (non-linear) transform; only linear ones are read");
+    openvdb::FloatTree& tree = vdb->tree();
+    if (tree.background() != 0)
+        warnings.push_back(source + " has background " + (std::ostringstream() << tree.background()).str() +
+                           ": read as 0 (the smoke is its active voxels)");
+    tree.root().setBackground(0.0f, /*updateChildNodes=*/false);
+    // One pass over every stored value, tiles once each: the tree stays as sparse as in the file.
+    std::uint64_t hostile = 0;
+    for (auto it = tree.beginValueAll(); it; ++it) {
+        float v = *it;
+        if (!it.isValueOn()) {
+            if (v != 0) it.setValue(0.0f);
+        } else if (!(v >= 0) || std::isinf(v)) {
+            it.setValue(0.0f);
+            hostile += it.getVoxelCount();
+        } else {
+            max_ = std::max(max_, v);
+        }
+    }
+    if (hostile) warnings.push_back(source + ": " + std::to_string(hostile) + " NaN, infinite or negative voxels read as 0");
+    active_ = vdb->evalActiveVoxelBoundingBox();
+    grid_ = std::move(vdb);
+}
+
+Bounds3 OpenVdbGrid::bounds() const {
+    Bounds3 b;
+    if (active_.empty()) return b;
+    openvdb::Vec3d lo = active_.min().asVec3d() - 1.0, hi = active_.max().asVec3d() + 1.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        openvdb::Vec3d p = grid_->indexToWorld(
+            openvdb::Vec3d(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(), corner & 4 ? hi.z() : lo.z()));
+        b.include(dvec3(p.x(), p.y(), p.z()));
+    }
+    return b;
+}
+
+double OpenVdbGrid::density(const dvec3& p) const {
+    // An unsafe accessor does not register with the tree (a locked table): cheap to make per lookup, and
+    // the tree never changes after load.
+    auto voxels = grid_->getConstUnsafeAccessor();
+    return openvdb::tools::BoxSampler::sample(voxels, grid_->worldToIndex(openvdb::Vec3d(p.x, p.y, p.z)));
+}
+
+// OpenVDB's matrices act on row vectors: transposed into one on column vectors.
+glm::dmat4 OpenVdbGrid::worldFromIndex() const {
+    const openvdb::Mat4d m = grid_->transform().baseMap()->getAffineMap()->getMat4();
+    glm::dmat4 g;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) g[i][j] = m[i][j];
+    return g;
+}
+
+bool OpenVdbGrid::sameTransform(const VoxelGrid& other) const {
+    const auto* o = dynamic_cast<const OpenVdbGrid*>(&other);
+    return o && o->grid_->transform() == grid_->transform();
+}
+
+std::optional<IndexBox> OpenVdbGrid::activeBox() const {
+    if (active_.empty()) return std::nullopt;
+    return indexBox(active_);
+}
+
+void OpenVdbGrid::forEachActive(const std::function<void(const IndexBox&, float)>& visit) const {
+    openvdb::CoordBBox box;
+    for (auto it = grid_->tree().cbeginValueOn(); it; ++it) {
+        const float v = *it;
+        if (v > 0 && it.getBoundingBox(box)) visit(indexBox(box), v);
+    }
+}
+
+float OpenVdbGrid::minimum(const IndexBox& box) const {
+    auto accessor = grid_->getConstAccessor();
+    const openvdb::CoordBBox b(openvdb::Coord(box.lo.x, box.lo.y, box.lo.z), openvdb::Coord(box.hi.x, box.hi.y, box.hi.z));
+    float m = std::numeric_limits<float>::infinity();
+    for (auto c = b.begin(); c && m > 0; ++c) {
+        float v;
+        m = accessor.probeValue(*c, v) ? std::min(m, v) : 0.0f;
+    }
+    return std::max(0.0f, m);
+}
+
+}  // namespace brume
