@@ -498,3 +498,24 @@ TEST_F(RtraceCli, BadMediaAreRefused) {
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "rtrace: warning - m.rad:1: unknown source \"nowhere\" in mist \"m\"\n");
 }
+
+// OpenVDB is a module loaded only when a grid is read: a program copied away from it still runs scenes
+// without smoke, and says why it cannot read a grid where it needs one (exit 1, nothing on stdout).
+TEST_F(RtraceCli, WithoutTheOpenVdbModuleOnlyGridsCannotBeRead) {
+    fs::path dir = brume_test::scratchDir("cli_no_openvdb");
+    fs::copy_file(fs::path(BRUME_BIN_DIR) / "rtrace", dir / "rtrace", fs::copy_options::overwrite_existing);
+    std::ofstream(dir / "lamp.rad") << kScene;
+    std::ofstream(dir / "smoke.rad") << "void smoke s 1 soot.vdb 0 3 1 1 1\n";
+    std::ofstream(dir / "in") << "0 0 1 0 0 -1\n";
+    Output plain = brume_test::runCaptured("cd " + dir.string() + " && ./rtrace -h lamp.rad < in", dir);
+    EXPECT_EQ(plain.status, 0) << plain.err;
+    EXPECT_FALSE(plain.out.empty());
+    // The grid's file exists: reading it is what needs the module.
+    fs::copy_file(dir / "in", dir / "soot.vdb", fs::copy_options::overwrite_existing);
+    Output smoky = brume_test::runCaptured("cd " + dir.string() + " && ./rtrace -h lamp.rad smoke.rad < in", dir);
+    EXPECT_EQ(smoky.status, 1);
+    EXPECT_TRUE(smoky.out.empty());
+    EXPECT_NE(smoky.err.find("soot.vdb: cannot read OpenVDB grids: libbrume_openvdb.so is neither beside"),
+              std::string::npos)
+        << smoky.err;
+}

@@ -25,12 +25,10 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
     child.ambientLevel = q.at.level + 1;
     child.reflections = q.at.level + 1;
     child.weight = q.weight;
-    child.from = point;
     child.fromWeight = q.weight;
     child.depth = 1;
     bool aims = portals_.active();
-    if (aims) child.skyNormal = *q.at.normal;
-    child.aimedPerRay = double(aimedCount(samples.count())) / samples.count();
+    aimingFrom(child, point, *q.at.normal, samples.count(), aims);
     for (int j = 0; j < samples.rows(); ++j) {
         for (int k = 0; k < samples.columns(); ++k) {
             dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());

@@ -258,9 +258,7 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, PathContext
             }
             if (RayOutputs* out = ctx.recording()) out->distantSource(light.object(), scene_.lightModifier(light), ray.dir);
             Spectrum le = emitted();
-            if (glows) return state.kind == PathState::Kind::Sampled && state.skyNormal != dvec3(0)
-                                  ? le * float(portals_.rayShare(state.from, state.skyNormal, state.aimedPerRay, ray.dir, ctx.scratch))
-                                  : le;
+            if (glows) return le * float(portals_.rayShare(state, ray.dir, ctx.scratch));
             if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
             if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
             return sampledSourceShare(le, li, state, ray, nullptr, sourceShare);

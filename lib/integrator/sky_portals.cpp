@@ -52,10 +52,11 @@ double SkyPortals::density(const dvec3& p, const dvec3& n, const dvec3& dir, Scr
     return active_ && choose(p, n, scratch.portals) ? densityOf(p, dir, scratch.portals) : 0;
 }
 
-double SkyPortals::rayShare(const dvec3& p, const dvec3& n, double aimedPerRay, const dvec3& dir,
-                            Scratch& scratch) const {
-    double aimed = density(p, n, dir, scratch);
-    return aimed > 0 ? powerHeuristic(std::max(0.0, glm::dot(n, dir)) / kPi, aimedPerRay * aimed) : 1.0;
+double SkyPortals::rayShare(const PathState& ray, const dvec3& dir, Scratch& scratch) const {
+    if (ray.kind != PathState::Kind::Sampled || ray.skyNormal == dvec3(0)) return 1.0;
+    double aimed = density(ray.from, ray.skyNormal, dir, scratch);
+    return aimed > 0 ? powerHeuristic(std::max(0.0, glm::dot(ray.skyNormal, dir)) / kPi, ray.aimedPerRay * aimed)
+                     : 1.0;
 }
 
 Spectrum SkyPortals::skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns) const {

@@ -20,6 +20,14 @@ namespace brume {
 // take the ratio (aimedPerRay).
 inline int aimedCount(int rays) { return std::max(1, rays / 4); }
 
+// The state of `rays` cosine-distributed rays from p (facing n) where samples aim too (`aiming`): what they
+// meet then takes its share by the weights (SkyPortals::rayShare, SunPatches::rayShare).
+inline void aimingFrom(PathState& state, const dvec3& p, const dvec3& n, int rays, bool aiming) {
+    state.from = p;
+    state.skyNormal = aiming ? n : dvec3(0);
+    state.aimedPerRay = double(aimedCount(rays)) / rays;
+}
+
 class SkyPortals {
 public:
     SkyPortals(const RenderScene& scene, const HitShading& shading, const ShadowRays& shadowRays, bool enabled);
@@ -33,9 +41,9 @@ public:
     // light, with its share of the irradiance.
     Spectrum sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
                     PathContext& ctx, std::vector<AimedSample>* aimed = nullptr) const;
-    // The share of the sky that a cosine-distributed ray from p (facing n, where `aimedPerRay` samples aimed
-    // per ray) keeps where it escapes along dir.
-    double rayShare(const dvec3& p, const dvec3& n, double aimedPerRay, const dvec3& dir, Scratch& scratch) const;
+    // The share of the sky a ray keeps where it escapes along dir: all of it, unless it is a cosine-distributed
+    // ray from a point that also aimed (aimingFrom).
+    double rayShare(const PathState& ray, const dvec3& dir, Scratch& scratch) const;
     // The density (per steradian) with which sample() aims from p, facing n, along unit dir.
     double density(const dvec3& p, const dvec3& n, const dvec3& dir, Scratch& scratch) const;
     // The direction sample() aims along from p, facing n, for (u, v) in the unit square; nullopt where p sees

@@ -44,13 +44,9 @@ bool SunPatches::isPortal(const SurfaceId& id) const {
 }
 
 std::optional<SurfaceHit> SunPatches::land(const Beam& beam, double u, double v) const {
-    size_t i = std::min(size_t(std::lower_bound(beam.cdf.begin(), beam.cdf.end(), u) - beam.cdf.begin()),
-                        beam.cdf.size() - 1);
-    double lo = i ? beam.cdf[i - 1] : 0.0;
-    if (!(beam.cdf[i] > lo)) return std::nullopt;
-    const Portal& portal = scene_.portals()[i];
-    Ray ray(portal.pointAt(std::clamp((u - lo) / (beam.cdf[i] - lo), 0.0, 1.0), v), beam.travel,
-            std::numeric_limits<double>::infinity(), portal.surface());
+    const Portal& portal = scene_.portals()[pickAndReuse(beam.cdf, u)];
+    if (!(std::abs(glm::dot(portal.polygon().normal, beam.travel)) > 0)) return std::nullopt;  // edge-on: no beam
+    Ray ray(portal.pointAt(u, v), beam.travel, std::numeric_limits<double>::infinity(), portal.surface());
     for (int pane = 0; pane < kMaxPanes; ++pane) {
         auto hit = scene_.geometry().intersect(ray);
         if (!hit || !isPortal(hit->surface)) return hit;

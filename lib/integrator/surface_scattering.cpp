@@ -36,7 +36,8 @@ Spectrum SurfaceScattering::shade(const Shading& sh, const Lobes& lobes, const S
     }
     bool diffuseOrGlossy = !lobes.diffuse.isBlack() || !lobes.diffuseTrans.isBlack() || !lobes.glossy.isBlack() ||
                            !lobes.glossyTrans.isBlack() || lobes.general;
-    if (diffuseOrGlossy) value += lights_.sampleLd(Scatterer(sh, lobes), surface, state, ctx, patches_.active() ? &patches_ : nullptr);
+    if (diffuseOrGlossy)
+        value += lights_.sampleLd(Scatterer(sh, lobes), surface, state, ctx, patches_.active() ? &patches_ : nullptr);
     if (lobes.sampleGlossy || lobes.sampleGlossyTrans) value += glossy(sh, lobes, surface, state, ctx);
     if (lobes.general && lobes.sampleGeneral) value += general(sh, *lobes.general, surface, state, ctx);
     value += ambient(sh, lobes, surface, state, ctx);
@@ -85,8 +86,8 @@ Spectrum SurfaceScattering::general(const Shading& sh, const GeneralLobe& lobe, 
 // tracing (-ad cosine-distributed, stratified paths at the first bounce and one after it; one where the
 // cache has no record yet deeper in a path), for -ab bounces; beyond them Radiance's -av value, or with the
 // cache, paths ended by Russian roulette. Sources these paths meet are left out: next-event estimation
-// counted them. The sky seen through windows and the sun's patches are aimed at too (SkyPortals, SunPatches),
-// as many samples of each as paths.
+// counted them. The sky seen through windows and the sun's patches are aimed at too (SkyPortals, SunPatches):
+// aimedCount(paths) samples of each.
 Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const SurfaceId& surface,
                                     const PathState& state, PathContext& ctx) const {
     Spectrum sum(0.f);
@@ -111,9 +112,7 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
         int count = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
         child.kind = PathState::Kind::Sampled;
         child.ambientLevel = state.ambientLevel + 1;
-        child.from = sh.point;
-        child.skyNormal = portals_.active() ? normal : dvec3(0);
-        child.aimedPerRay = double(aimedCount(count)) / count;
+        aimingFrom(child, sh.point, normal, count, portals_.active());
         Frame frame(normal);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         Spectrum paths(0.f);

@@ -18,11 +18,9 @@ PolygonPoints::PolygonPoints(const Polygon& polygon) : polygon_(&polygon) {
 }
 
 dvec3 PolygonPoints::at(double u, double v) const {
-    size_t t = std::lower_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin();
-    t = std::min(t, cdf_.size() - 1);
-    double lo = t ? cdf_[t - 1] : 0.0;
+    size_t t = pickAndReuse(cdf_, u);
     double b0, b1;
-    uniformTriangle(std::clamp((u - lo) / (cdf_[t] - lo), 0.0, 1.0), v, b0, b1);
+    uniformTriangle(u, v, b0, b1);
     const auto& tri = polygon_->triangles[t];
     const auto& vs = polygon_->vertices;
     return b0 * vs[tri[0]] + b1 * vs[tri[1]] + (1 - b0 - b1) * vs[tri[2]];

@@ -1,8 +1,10 @@
 // Mappings from the unit square to directions and points with known densities.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <vector>
 
 #include "geometry/ray.h"
 
@@ -48,6 +50,15 @@ inline dvec3 uniformCone(double u, double v, double oneMinusCosMax) {
     double sinT = std::sqrt(std::max(0.0, oneMinusCos * (2 - oneMinusCos)));
     double phi = 2 * std::numbers::pi * v;
     return {sinT * std::cos(phi), sinT * std::sin(phi), cosT};
+}
+
+// The item a number u in [0, 1) picks from a normalised cumulative distribution `cdf` (ending at 1), with u
+// made uniform again within the item's interval: one number both chooses and places, so strata stay strata.
+inline size_t pickAndReuse(const std::vector<double>& cdf, double& u) {
+    size_t i = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), u) - cdf.begin()), cdf.size() - 1);
+    double lo = i ? cdf[i - 1] : 0.0;
+    u = cdf[i] > lo ? std::clamp((u - lo) / (cdf[i] - lo), 0.0, 1.0) : 0.0;
+    return i;
 }
 
 // Uniform point on a triangle (Heitz 2019's area-preserving, low-distortion map), as barycentrics.
