@@ -56,7 +56,8 @@ REF_OPTIONS = ["-I", "-h", "-ab", "50", "-aa", "0", "-ad", "65536", "-as", "0", 
 REF_RUNS = 4
 
 COMMON = ["-I", "-h"]
-# (family, label, program, rungs). Brume's path tracing with every bounce, as the reference; its cache's paths
+# (family, label, program, rungs). Brume's path tracing with every bounce, as the reference, ended by roulette at
+# its default -lw (each path's weight is its share of the sensor's value, as in Radiance); its cache's paths
 # go on past -ab by roulette too. Radiance's -ab 7 leaves out about 0.3 % of the light in these rooms. Radiance's
 # path tracing without -as: its super-samples, placed where the first samples differ most, bias it low by 5-15 %
 # in side-lit rooms (its cache takes them, as users run it, and once without).
@@ -65,9 +66,9 @@ FAMILIES = [
     ("brume-cache", "Brume cache", "brume",
      [["-ab", "5", "-aa", aa, "-ad", ad] for aa, ad in ((".3", "256"), (".2", "512"), (".1", "1024"), (".05", "2048"))]),
     ("brume-pt", "Brume path tracing", "brume",
-     [["-ab", "50", "-aa", "0", "-lw", "1e-5", "-ad", str(n)] for n in (64, 256, 1024, 4096)]),
+     [["-ab", "50", "-aa", "0", "-ad", str(n)] for n in (64, 256, 1024, 4096)]),
     ("brume-pt-rays", "Brume path tracing, sky by rays only (-aP-)", "brume",
-     [["-ab", "50", "-aa", "0", "-lw", "1e-5", "-aP-", "-ad", str(n)] for n in (256, 1024, 4096)]),
+     [["-ab", "50", "-aa", "0", "-aP-", "-ad", str(n)] for n in (256, 1024, 4096)]),
     ("radiance-cache", "Radiance cache", "radiance",
      [["-ab", "5", "-aa", ".2", "-ar", "64", "-ad", "512", "-as", "128"],
       ["-ab", "5"],

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -108,26 +109,36 @@ const Scene& room() {
     return scene;
 }
 
-// The mean of `runs` independent estimates of each ray (its value, or irradiance for sensors).
+// The mean of `runs` independent estimates of each ray (its value, or irradiance for sensors); with `batches`
+// > 1, the median of the means of that many batches of them (see DaylitOfficeAgreesWithRadiance).
 enum class Mode { View, Sensor, IrradianceAtHit };  // rtrace, rtrace -I, rtrace -i
 
 std::vector<Rgb> brumeMeans(const Scene& scene, const std::vector<LabelledRay>& rays, Mode mode, int runs,
-                            const RenderSettings& s, std::vector<Rgb>* standardErrors = nullptr) {
+                            const RenderSettings& s, std::vector<Rgb>* standardErrors = nullptr, int batches = 1) {
     RenderScene render(scene, s.materials);
     Integrator integrator(render, s);
     std::vector<Rgb> mean(rays.size()), sem(rays.size());
     tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
         Rgb sum{}, sum2{};
+        std::vector<Rgb> batchSums(batches, Rgb{});
         for (int k = 0; k < runs; ++k) {
             uint64_t index = uint64_t(i) * uint64_t(runs) + uint64_t(k);
             RayRecord r = mode == Mode::Sensor            ? test::irradiance(integrator, rays[i].org, rays[i].dir, index)
                           : mode == Mode::IrradianceAtHit ? test::irradianceAtHit(integrator, rays[i].org, rays[i].dir, index)
                                                           : test::trace(integrator, rays[i].org, rays[i].dir, index);
-            for (int c = 0; c < 3; ++c) sum[c] += r.value[c], sum2[c] += double(r.value[c]) * r.value[c];
+            for (int c = 0; c < 3; ++c) {
+                sum[c] += r.value[c], sum2[c] += double(r.value[c]) * r.value[c];
+                batchSums[k % batches][c] += r.value[c];
+            }
         }
         for (int c = 0; c < 3; ++c) {
-            mean[i][c] = sum[c] / runs;
-            sem[i][c] = std::sqrt(std::max(0.0, sum2[c] / runs - mean[i][c] * mean[i][c]) / runs);
+            std::vector<double> means(batches);
+            for (int b = 0; b < batches; ++b) means[b] = batchSums[b][c];
+            std::sort(means.begin(), means.end());
+            mean[i][c] = batches == 1 ? sum[c] / runs
+                                      : 0.5 * (means[(batches - 1) / 2] + means[batches / 2]) * batches / runs;
+            double all = sum[c] / runs;
+            sem[i][c] = std::sqrt(std::max(0.0, sum2[c] / runs - all * all) / runs);
         }
     });
     if (standardErrors) *standardErrors = sem;
@@ -196,10 +207,10 @@ constexpr int kRuns = 128;  // estimates averaged per ray
 // `perRay`, all within kRms.
 void expectAgreement(const std::string& dir, const Scene& scene, const char* rayFile, size_t atLeast, Mode mode,
                      const char* referenceFile, double perRay = kPerRay, int runs = kRuns,
-                     const RenderSettings& settings = referenceSettings(), double rms = kRms) {
+                     const RenderSettings& settings = referenceSettings(), double rms = kRms, int batches = 1) {
     auto rays = readRays(dir, rayFile);
     ASSERT_GE(rays.size(), atLeast);
-    auto brume = brumeMeans(scene, rays, mode, runs, settings);
+    auto brume = brumeMeans(scene, rays, mode, runs, settings, nullptr, batches);
     Comparison c = compare(rays, brume, readReference(dir, referenceFile), perRay);
     EXPECT_LT(c.rms(), rms) << "over " << c.count << " channel values";
     if (std::getenv("BRUME_COMPAT_VERBOSE")) std::printf("  RMS %.3f%% over %d values\n", 100 * c.rms(), c.count);
@@ -365,6 +376,12 @@ TEST(RadianceCompat, BsdfFloorSensorsAgreeWithRadiance) {
 // estimate varies by 2.7%). Tolerance: each value within 3%
 // (four times that), RMS 1% (about twice what the two programs' noise gives; measured: RMS 0.49% for the
 // sensors, 0.30% for the rays, at most 1.8%); the issue asks for 2% RMS.
+// Each value is the median of 4 means of 4 runs, not the mean of 16: Brume's paths keep the sun seen by way of
+// the desks' metal (caustics, which Radiance's ambient rays drop), rare and bright: of 400 runs of the wall
+// between the windows (mean 2.259, standard deviation 2.1%) the largest is 1.3 times the mean, and rarer ones
+// are larger (one of this test's 16 runs there was about 2.3 times), which moves a mean of 16 by several %.
+// What the median leaves out of the mean is below 0.1% there (the 400 runs' mean with and without their
+// largest).
 TEST(RadianceCompat, DaylitOfficeAgreesWithRadiance) {
     Scene scene = sceneIn(kOffice, "office.rad");
     RenderSettings s = test::fixedSeed();
@@ -372,8 +389,8 @@ TEST(RadianceCompat, DaylitOfficeAgreesWithRadiance) {
     s.ambientAccuracy = 0;
     s.ambientDivisions = 4096;
     s.minWeight = 1e-5;
-    expectAgreement(kOffice, scene, "sensors.txt", 30, Mode::Sensor, "reference_sensors.txt", 0.03, 16, s, 0.01);
-    expectAgreement(kOffice, scene, "rays.txt", 9, Mode::View, "reference_rays.txt", 0.03, 16, s, 0.01);
+    expectAgreement(kOffice, scene, "sensors.txt", 30, Mode::Sensor, "reference_sensors.txt", 0.03, 16, s, 0.01, 4);
+    expectAgreement(kOffice, scene, "rays.txt", 9, Mode::View, "reference_rays.txt", 0.03, 16, s, 0.01, 4);
 }
 
 namespace {

@@ -25,13 +25,13 @@ struct Plays {
 };
 
 Plays play(const RussianRoulette& roulette, const PathState& parent, float coef, bool reflection,
-           bool byReflectance = false) {
+           bool byReflectance = false, int rays = 1) {
     Random rng(17, 3);
     Plays plays;
     for (int i = 0; i < kPlays; ++i) {
         PathState child;
         float boost;
-        bool on = roulette.spawn(parent, child, Spectrum(coef), reflection, rng, boost, byReflectance);
+        bool on = roulette.spawn(parent, child, Spectrum(coef), reflection, rng, boost, byReflectance, rays);
         plays.kept.add(on ? boost : 0.0);
         plays.survivors += on;
     }
@@ -72,6 +72,26 @@ TEST(RussianRoulette, TheChildCarriesTheScatteringsWeightDepthAndReflections) {
     ASSERT_TRUE(roulette.spawn(parent, child, Spectrum(3.f), false, rng, boost));
     EXPECT_DOUBLE_EQ(child.weight, 0.5);
     EXPECT_EQ(child.reflections, 2);  // a transmission is no reflection
+}
+
+// The -ad paths of a first bounce share their parent's estimate: under roulette each weighs 1/paths of it (its
+// contribution to the answer, as Radiance's path-traced ambient rays), down to -lw; a hard -lr keeps the
+// undivided weight, which its hard -lw cut compares.
+TEST(RussianRoulette, PathsThatShareAnEstimateShareItsWeight) {
+    PathState child;
+    float boost;
+    Random rng;
+    ASSERT_TRUE(RussianRoulette(-10, 1e-4).spawn(withWeight(0.5), child, Spectrum(0.4f), true, rng, boost, false, 256));
+    EXPECT_DOUBLE_EQ(child.weight, 0.5 * 0.4f / 256);
+    EXPECT_EQ(boost, 1.f);
+    ASSERT_TRUE(RussianRoulette(7, 1e-4).spawn(withWeight(0.5), child, Spectrum(0.4f), true, rng, boost, false, 256));
+    EXPECT_DOUBLE_EQ(child.weight, 0.5 * 0.4f);
+    // The split alone takes no path below -lw (the roulette would play once for all of them).
+    Plays split = play(RussianRoulette(-10, 0.01), withWeight(1), 0.5f, true, false, 250);
+    EXPECT_EQ(split.wentOn(), 1.0);
+    EXPECT_EQ(split.kept.value(), 1.0);
+    ASSERT_TRUE(RussianRoulette(-10, 0.01).spawn(withWeight(1), child, Spectrum(0.5f), true, rng, boost, false, 250));
+    EXPECT_DOUBLE_EQ(child.weight, 0.01);
 }
 
 // Below -lw (.01) a path of weight .002 goes on with probability .2, and then has weight -lw.

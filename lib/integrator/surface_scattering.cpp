@@ -106,10 +106,10 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
             sum += coef * cached * float(1 / kPi);
             continue;
         }
+        int count = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
         PathState child;
         float boost;
-        if (!roulette_.spawn(state, child, coef, !transmit, ctx.rng, boost, beyond)) continue;
-        int count = state.ambientLevel == 0 ? settings_.ambientDivisions : 1;
+        if (!roulette_.spawn(state, child, coef, !transmit, ctx.rng, boost, beyond, count)) continue;
         child.kind = PathState::Kind::Sampled;
         child.ambientLevel = state.ambientLevel + 1;
         aimingFrom(child, sh.point, normal, count, portals_.active());
