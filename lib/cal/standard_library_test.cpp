@@ -8,6 +8,7 @@
 #include "cal/embedded.h"
 #include "cal/parser.h"
 #include "cal/testing.h"
+#include "scene_text.h"
 
 namespace brume::cal {
 namespace {
@@ -83,7 +84,9 @@ TEST(CalStandardLibrary, ChannelNamesAreRadiancesChannelNumbers) {
     for (int c = 1; c < kChannelCount; ++c) EXPECT_EQ(calc(names[c]), c) << names[c];
 }
 
+// Brume's own files: a user's RAYPATH (Radiance's library, say) would put other files of the same names first.
 TEST(CalStandardLibrary, EveryDefinitionOfEveryFileCompiles) {
+    test::ScopedRayPath none(nullptr);
     Library library;
     Compiler compiler(library);
     for (const EmbeddedFile& file : embeddedCalFiles()) {
