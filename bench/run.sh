@@ -5,8 +5,9 @@
 # error of the irradiance caches) takes --remake-reference and --rerun-radiance, and is left out with --skip-cache;
 # spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral; smoke.py
 # (time against error through FDS soot, with and without empty-space skipping) takes --repeat and is left out
-# with --skip-smoke; daylight.py (daylit rooms' sensor grids against Radiance) takes --remake-reference and
-# --rerun-radiance, and is left out with --skip-daylight.
+# with --skip-smoke; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
+# picture at -ab 5 against Radiance's cache) take --remake-reference and --rerun-radiance, and are left out with
+# --skip-daylight.
 set -euo pipefail
 bin=${1:-build/bin}
 shift || true
@@ -58,4 +59,6 @@ fi
 if ((!skip_daylight)); then
     echo
     python3 "$here/daylight.py" --bin "$bin" "${daylight_args[@]}"
+    echo
+    python3 "$here/daylight_picture.py" --bin "$bin" "${daylight_args[@]}"  # needs numpy, as rpict.py
 fi
