@@ -132,11 +132,10 @@ std::vector<Rgb> brumeMeans(const Scene& scene, const std::vector<LabelledRay>& 
             }
         }
         for (int c = 0; c < 3; ++c) {
-            std::vector<double> means(batches);
-            for (int b = 0; b < batches; ++b) means[b] = batchSums[b][c];
-            std::sort(means.begin(), means.end());
-            mean[i][c] = batches == 1 ? sum[c] / runs
-                                      : 0.5 * (means[(batches - 1) / 2] + means[batches / 2]) * batches / runs;
+            std::vector<double> totals(batches);
+            for (int b = 0; b < batches; ++b) totals[b] = batchSums[b][c];
+            std::sort(totals.begin(), totals.end());
+            mean[i][c] = 0.5 * (totals[(batches - 1) / 2] + totals[batches / 2]) * batches / runs;  // one: the mean
             double all = sum[c] / runs;
             sem[i][c] = std::sqrt(std::max(0.0, sum2[c] / runs - all * all) / runs);
         }
