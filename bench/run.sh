@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Brume benchmark (make bench): bash bench/run.sh BIN_DIR [options]; see bench/README.md.
 # bench.py (rtrace) takes every option but --skip-rpict, --skip-cache and --rerun-radiance; rpict.py (pictures)
-# takes --repeat, --threads and --remake-reference, and is left out with --skip-rpict; cache.py (time against
+# takes --repeat, --threads and --remake-reference, picture_widths.py (-ab 0 pictures 100 to 2000 pixels wide)
+# --repeat and --remake-reference, and both are left out with --skip-rpict; cache.py (time against
 # error of the irradiance caches) takes --remake-reference and --rerun-radiance, and is left out with --skip-cache;
 # spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral; smoke.py
 # (time against error through FDS soot, with and without empty-space skipping) takes --repeat and is left out
@@ -20,6 +21,7 @@ skip_smoke=0
 skip_daylight=0
 bench_args=()
 rpict_args=()
+widths_args=()
 cache_args=()
 spectral_args=()
 smoke_args=()
@@ -32,8 +34,8 @@ while (($#)); do
         --skip-smoke) skip_smoke=1 ;;
         --skip-daylight) skip_daylight=1 ;;
         --rerun-radiance) cache_args+=("$1"); daylight_args+=("$1") ;;
-        --remake-reference) bench_args+=("$1"); rpict_args+=("$1"); cache_args+=("$1"); daylight_args+=("$1") ;;
-        --repeat) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); spectral_args+=("$1" "$2"); smoke_args+=("$1" "$2"); shift ;;
+        --remake-reference) bench_args+=("$1"); rpict_args+=("$1"); widths_args+=("$1"); cache_args+=("$1"); daylight_args+=("$1") ;;
+        --repeat) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); widths_args+=("$1" "$2"); spectral_args+=("$1" "$2"); smoke_args+=("$1" "$2"); shift ;;
         --threads) bench_args+=("$1" "${2:?$1 needs a value}"); rpict_args+=("$1" "$2"); shift ;;
         *) bench_args+=("$1") ;;
     esac
@@ -43,6 +45,8 @@ python3 "$here/bench.py" --bin "$bin" "${bench_args[@]}"
 if ((!skip_rpict)); then
     echo
     python3 "$here/rpict.py" --bin "$bin" "${rpict_args[@]}"  # reruns itself in a Python with numpy
+    echo
+    python3 "$here/picture_widths.py" --bin "$bin" "${widths_args[@]}"
 fi
 if ((!skip_cache)); then
     echo

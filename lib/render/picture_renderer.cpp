@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "render/progress.h"
 #include "render/sequence.h"
@@ -38,7 +39,7 @@ public:
         values_.values.assign(size_t(w_) * h_ * c_, 0.f);
         if (c_ > 3) colours_.assign(size_t(w_) * h_ * 3, 0.f);
         depth_.assign(size_t(w_) * h_, 0.f);
-        traced_.assign(size_t(w_) * h_, 0);
+        settled_.assign(size_t(w_) * h_, 0);
     }
 
     RenderedPicture run() {
@@ -81,7 +82,7 @@ private:
         return p;
     }
 
-    // One ray through pixel (x, row): its value and distance stored, the pixel marked traced.
+    // One ray through pixel (x, row): its value and distance stored.
     void trace(int x, int row, WorkItem& item) {
         size_t i = at(x, row);
         uint64_t index = i;
@@ -89,7 +90,6 @@ private:
         double jx = 0.5 + s_.jitter * (0.5 - random.uniform()), jy = 0.5 + s_.jitter * (0.5 - random.uniform());
         // The view's y runs up from the bottom edge; rows run down from the top.
         std::optional<ViewRay> ray = view_.ray((x + jx) / w_, (h_ - 1 - row + jy) / h_);
-        traced_[i] = 1;
         if (ray && s_.aperture > 0 &&
             !jitterAperture(view_, *ray, s_.aperture, random.uniform(), random.uniform(), random.uniform()))
             ray.reset();
@@ -125,60 +125,106 @@ private:
         }
     }
 
-    // First pass on the grid; tiles whose corners differ are traced whole, the others interpolated.
+    // A block of pixels whose corners are traced: a tile of the first pass (level 1) or a quarter of a block.
+    struct Block {
+        int x0, y0, x1, y1, level;
+        bool hasInterior() const { return x1 - x0 > 1 || y1 - y0 > 1; }
+    };
+
+    // As Radiance's rpict: the first pass on the grid; a block whose corners differ has its middle and the
+    // middles of its edges traced and is split in four, level by level, until its quarters' corners agree or
+    // are neighbours; the pixels left are interpolated from the corners of the finest block holding them.
+    // A smooth gradient costs five samples per tile, not the whole tile; an edge, the pixels along it.
     void adaptive() {
         const std::vector<int>&xs = xs_, &ys = ys_;
         std::vector<std::pair<int, int>> grid;
         for (int y : ys)
             for (int x : xs) grid.push_back({x, y});
+        queue(grid);
         traceEach(grid);
         if (progress_) progress_->advance(long(grid.size()), long(grid.size()));
-        std::vector<char> busy((xs.size() - 1) * (ys.size() - 1));
-        for (size_t j = 0; j + 1 < ys.size(); ++j)
-            for (size_t i = 0; i + 1 < xs.size(); ++i) {
-                const float* c[4] = {colour(xs[i], ys[j]), colour(xs[i + 1], ys[j]), colour(xs[i], ys[j + 1]),
-                                     colour(xs[i + 1], ys[j + 1])};
-                bool b = false;
-                for (int p = 0; p < 4 && !b; ++p)
-                    for (int q = p + 1; q < 4 && !b; ++q) b = differ(c[p], c[q], s_.sampleThreshold);
-                busy[j * (xs.size() - 1) + i] = b;
+        // Bands of tile rows, for the progress report.
+        size_t tileRows = std::max<size_t>(1, kBand / s_.sampleSpacing);
+        for (size_t j0 = 0; j0 + 1 < ys.size(); j0 += tileRows) {
+            size_t j1 = std::min(ys.size() - 1, j0 + tileRows);
+            std::vector<Block> open;
+            for (size_t j = j0; j < j1; ++j)
+                for (size_t i = 0; i + 1 < xs.size(); ++i) open.push_back({xs[i], ys[j], xs[i + 1], ys[j + 1], 1});
+            long traced = 0;
+            while (!open.empty()) {
+                std::vector<Block> finer;
+                std::vector<std::pair<int, int>> middles;
+                for (const Block& b : open) {
+                    if (!b.hasInterior()) continue;
+                    if (cornersDiffer(b)) split(b, finer, middles);
+                    else fill(b);
+                }
+                traceEach(middles);
+                traced += long(middles.size());
+                open = std::move(finer);
             }
-        // Tile (i, j) spans columns xs[i]..xs[i+1] and rows ys[j]..ys[j+1], edges included: a pixel on an
-        // edge is traced when any tile holding it is busy, else interpolated along the edge alone, which both
-        // tiles agree on.
-        std::vector<int> tileOfX(w_), tileOfY(h_);
-        for (size_t i = 0; i + 1 < xs.size(); ++i) std::fill(&tileOfX[xs[i]], &tileOfX[xs[i + 1]] + 1, int(i));
-        for (size_t j = 0; j + 1 < ys.size(); ++j) std::fill(&tileOfY[ys[j]], &tileOfY[ys[j + 1]] + 1, int(j));
-        auto isBusy = [&](int x, int row) {
-            size_t nx = xs.size() - 1;
-            int i = tileOfX[x], j = tileOfY[row];
-            bool b = busy[j * nx + i];
-            if (i > 0 && x == xs[i]) b = b || busy[j * nx + i - 1];
-            if (j > 0 && row == ys[j]) b = b || busy[(j - 1) * nx + i];
-            if (i > 0 && j > 0 && x == xs[i] && row == ys[j]) b = b || busy[(j - 1) * nx + i - 1];
-            return b;
-        };
-        for (int top = 0; top < h_; top += kBand) {
-            int bottom = std::min(h_, top + kBand);
-            std::vector<std::pair<int, int>> busyPixels;
-            for (int row = top; row < bottom; ++row)
-                for (int x = 0; x < w_; ++x)
-                    if (!traced_[at(x, row)] && isBusy(x, row)) busyPixels.push_back({x, row});
-            traceEach(busyPixels);
-            for (int row = top; row < bottom; ++row)
-                for (int x = 0; x < w_; ++x)
-                    if (!traced_[at(x, row)])
-                        interpolate(x, row, xs[tileOfX[x]], xs[tileOfX[x] + 1], ys[tileOfY[row]], ys[tileOfY[row] + 1]);
-            if (progress_) progress_->advance(long(w_) * (bottom - top), long(busyPixels.size()));
+            int bottom = j1 + 1 == ys.size() ? h_ : ys[j1];
+            if (progress_) progress_->advance(long(w_) * (bottom - ys[j0]), traced);
         }
     }
 
-    // Bilinear between the tile's traced corners (x0, y0)-(x1, y1).
+    // Colours too different to interpolate, or distances: an object in front of another (a chair leg before the
+    // floor) may have the same colour at the corners and another between them.
+    bool cornersDiffer(const Block& b) {
+        size_t i[4] = {at(b.x0, b.y0), at(b.x1, b.y0), at(b.x0, b.y1), at(b.x1, b.y1)};
+        const float* c[4] = {colour(b.x0, b.y0), colour(b.x1, b.y0), colour(b.x0, b.y1), colour(b.x1, b.y1)};
+        for (int p = 0; p < 4; ++p)
+            for (int q = p + 1; q < 4; ++q) {
+                float zp = depth_[i[p]], zq = depth_[i[q]];
+                if (differ(c[p], c[q], s_.sampleThreshold) || 2 * std::abs(zp - zq) > s_.sampleThreshold * (zp + zq))
+                    return true;
+            }
+        return false;
+    }
+
+    // Queues the middles of b's edges and its centre that are not yet traced; adds its quarters (halves
+    // where it is one pixel across) to `finer`.
+    void split(const Block& b, std::vector<Block>& finer, std::vector<std::pair<int, int>>& middles) {
+        auto cuts = [](int a, int z) {
+            return z - a > 1 ? std::vector<int>{a, (a + z) / 2, z} : std::vector<int>{a, z};
+        };
+        std::vector<int> cx = cuts(b.x0, b.x1), cy = cuts(b.y0, b.y1);
+        std::vector<std::pair<int, int>> points;
+        for (int y : cy)
+            for (int x : cx) points.push_back({x, y});
+        queue(points, &middles);
+        for (size_t j = 0; j + 1 < cy.size(); ++j)
+            for (size_t i = 0; i + 1 < cx.size(); ++i) finer.push_back({cx[i], cy[j], cx[i + 1], cy[j + 1], b.level + 1});
+    }
+
+    // Marks the pixels listed as traced (they are about to be); with `fresh`, adds those not traced before.
+    void queue(const std::vector<std::pair<int, int>>& pixels, std::vector<std::pair<int, int>>* fresh = nullptr) {
+        for (const auto& [x, row] : pixels) {
+            uint8_t& s = settled_[at(x, row)];
+            if (s == kTraced) continue;
+            s = kTraced;
+            if (fresh) fresh->push_back({x, row});
+        }
+    }
+
+    // The untraced pixels of a block whose corners agree, unless a finer block already interpolated them.
+    void fill(const Block& b) {
+        for (int row = b.y0; row <= b.y1; ++row)
+            for (int x = b.x0; x <= b.x1; ++x) {
+                uint8_t& s = settled_[at(x, row)];
+                if (s == kTraced || s > b.level) continue;
+                s = uint8_t(b.level);
+                interpolate(x, row, b.x0, b.x1, b.y0, b.y1);
+            }
+    }
+
+    // Bilinear between the block's traced corners (x0, y0)-(x1, y1).
     void interpolate(int x, int row, int x0, int x1, int y0, int y1) {
         double u = double(x - x0) / (x1 - x0), v = double(row - y0) / (y1 - y0);
         double wt[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
         size_t corner[4] = {at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)};
         float* p = pixel(x, row);
+        std::fill_n(p, c_, 0.f);
         float d = 0;
         for (int k = 0; k < 4; ++k) {
             const float* c = &values_.values[c_ * corner[k]];
@@ -199,7 +245,9 @@ private:
     PixelSpectra values_;
     std::vector<float> colours_;  // with bands: each traced pixel's RGB
     std::vector<float> depth_;
-    std::vector<char> traced_;
+    // Per pixel: kTraced, or the level of the block it was interpolated in (0: neither yet).
+    std::vector<uint8_t> settled_;
+    static constexpr uint8_t kTraced = 255;
     std::vector<int> xs_, ys_;  // the first pass's columns and rows
 };
 

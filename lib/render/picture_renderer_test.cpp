@@ -103,20 +103,68 @@ TEST(PictureRenderer, RowsRunDownFromTheTop) {
 TEST(PictureRenderer, AdaptiveSamplingInterpolatesOnlyWhereSamplesAgree) {
     TestScene glow("void glow g 0 0 4 2 3 4 0\ng sphere sky 0 0 4 0 0 0 -100\n");
     Sequence uniform(glow.scene, glow.render, fixedSeed());
-    PictureSettings p = exact(37, 23);
+    PictureSettings p = exact(148, 92);
     p.sampleSpacing = 4;
     RenderedPicture a = renderPicture(uniform, frontView(), 0, p);
-    for (int row = 0; row < 23; ++row)
-        for (int x = 0; x < 37; ++x) EXPECT_FLOAT_EQ(a.picture.at(x, row)[1], 3.f);
+    for (int row = 0; row < 92; ++row)
+        for (int x = 0; x < 148; ++x) EXPECT_FLOAT_EQ(a.picture.at(x, row)[1], 3.f);
 
     TestScene t(kRoom);
     Sequence sequence(t.scene, t.render, fixedSeed());
-    RenderedPicture full = renderPicture(sequence, frontView(), 0, exact(37, 23));
+    RenderedPicture full = renderPicture(sequence, frontView(), 0, exact(148, 92));
     RenderedPicture adaptive = renderPicture(sequence, frontView(), 0, p);
     int same = 0;
     for (size_t i = 0; i < full.picture.pixels.size(); ++i) same += adaptive.picture.pixels[i] == full.picture.pixels[i];
     EXPECT_GT(same, int(full.picture.pixels.size() / 3));  // the edges and the ball's shading are traced
     EXPECT_LT(same, int(full.picture.pixels.size()));      // the flat floor and the black sky are not
+}
+
+// -ps > 1 refines as Radiance's rpict: a tile whose corners differ has its middles traced and is split, level
+// by level, so a smooth gradient (a floor under a lamp, no shadow) costs a few samples per tile, not the
+// whole tile, and every interpolated pixel stays within the threshold of the traced one.
+TEST(PictureRenderer, AdaptiveSamplingRefinesGradientsByHalves) {
+    TestScene t("void light lamp 0 0 3 50 50 50\nlamp sphere bulb 0 0 4 0 2 1.5 .05\n"
+                "void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey polygon floor 0 0 12 -9 -9 -1 9 -9 -1 9 9 -1 -9 9 -1\n");
+    Sequence sequence(t.scene, t.render, fixedSeed());
+    View down;  // the floor fills the view, under a lamp behind the eye
+    down.vp = {0, 2, 1}, down.vd = {0, 0, -1}, down.vu = {0, 1, 0};
+    down.vh = 60, down.vv = 45;
+    PictureSettings p = exact(64, 48);
+    RenderedPicture full = renderPicture(sequence, down, 0, p);
+    p.sampleSpacing = 8;
+    RenderedPicture adaptive = renderPicture(sequence, down, 0, p);
+    int traced = 0, busyTiles = 0;
+    double worst = 0;
+    for (int row = 0; row < 48; ++row)
+        for (int x = 0; x < 64; ++x) {
+            float a = adaptive.picture.at(x, row)[1], f = full.picture.at(x, row)[1];
+            traced += a == f;
+            worst = std::max(worst, std::abs(double(a) / f - 1));
+        }
+    for (int row = 0; row + 8 < 48; row += 8)
+        for (int x = 0; x + 8 < 64; x += 8) {
+            float a = full.picture.at(x, row)[1], b = full.picture.at(x + 8, row + 8)[1];
+            busyTiles += std::abs(a / b - 1) > p.sampleThreshold;
+        }
+    EXPECT_GT(busyTiles, 10);            // the gradient is steep enough to split tiles
+    EXPECT_LT(traced, 64 * 48 / 3);      // tracing them whole would trace nearly every pixel
+    EXPECT_LT(worst, p.sampleThreshold);  // linear between corners that agree within the threshold
+}
+
+// -ps > 1 also refines where distances differ, as Radiance's rpict: a pole of the same glow as the wall behind
+// it looks the same in colour, yet every pixel's distance is right, pole and wall, not a blend of the two.
+TEST(PictureRenderer, AdaptiveSamplingRefinesWhereDistancesDiffer) {
+    TestScene t("void glow g 0 0 4 1 1 1 0\ng polygon wall 0 0 12 -20 5 -20 20 5 -20 20 5 20 -20 5 20\n"
+                "g cylinder pole 0 0 7 0 2 -9 0 2 9 .15\n");
+    Sequence sequence(t.scene, t.render, fixedSeed());
+    PictureSettings p = exact(64, 48);
+    p.depth = true;
+    RenderedPicture full = renderPicture(sequence, frontView(), 0, p);
+    p.sampleSpacing = 8;
+    RenderedPicture adaptive = renderPicture(sequence, frontView(), 0, p);
+    int wrong = 0;
+    for (size_t i = 0; i < full.depth.size(); ++i) wrong += std::abs(adaptive.depth[i] / full.depth[i] - 1) > 0.02;
+    EXPECT_EQ(wrong, 0);
 }
 
 // -u-: the same picture whatever the number of threads, with jitter on, with the irradiance cache or without.
