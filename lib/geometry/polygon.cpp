@@ -142,9 +142,10 @@ double projectedSolidAngle(const std::vector<dvec3>& vertices, const dvec3& p, c
         if (ha >= 0) clipped[count++] = a;
         if ((ha >= 0) != (hb >= 0)) clipped[count++] = a + (b - a) * (ha / (ha - hb));
     }
+    // Each edge's angle and its plane's unit normal do not depend on the lengths of a and b: no normalizing.
     double sum = 0;
     for (size_t i = 0; i < count; ++i) {
-        dvec3 a = glm::normalize(clipped[i]), b = glm::normalize(clipped[(i + 1) % count]);
+        const dvec3 &a = clipped[i], &b = clipped[(i + 1) % count];
         dvec3 c = glm::cross(a, b);
         double len = glm::length(c);
         if (len > 0) sum += std::atan2(len, glm::dot(a, b)) * glm::dot(n, c) / len;

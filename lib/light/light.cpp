@@ -112,11 +112,9 @@ std::optional<LightSample> Light::sampleArea(const dvec3& p, double u, double v)
 
 // Front-lit polygons with few triangles are sampled by solid angle: their spherical triangles from p.
 LightView Light::view(const dvec3& p) const {
-    LightView v;
-    v.point = p;
     const auto* poly = std::get_if<Polygon>(shape_);
-    if (!poly || glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return v;
-    v.polygon = SphericalPolygon(p, *poly, rectangle_);
+    if (!poly || glm::dot(poly->normal, p - poly->vertices[0]) <= 0) return LightView{p};
+    LightView v{p, SphericalPolygon(p, *poly, rectangle_)};
     double total = v.polygon.solidAngle();
     v.solidAngle = total >= kMinSolidAngle && std::isfinite(total) ? total : 0;
     return v;

@@ -15,31 +15,31 @@ std::optional<Rectangle> asRectangle(const Polygon& poly) {
 SphericalPolygon::SphericalPolygon(const dvec3& p, const Polygon& poly, const std::optional<Rectangle>& rectangle)
     : point_(p), polygon_(&poly) {
     if (rectangle) {
-        isRectangle_ = true;
-        rectangle_ = SphericalRectangle(p, *rectangle);
-        solidAngle_ = rectangle_.solidAngle();
+        solidAngle_ = form_.emplace<SphericalRectangle>(p, *rectangle).solidAngle();
         return;
     }
     if (poly.triangles.size() > kMaxTriangles) return;
+    Triangles& tris = form_.emplace<Triangles>();
     for (size_t i = 0; i < poly.triangles.size(); ++i) {
         const auto& t = poly.triangles[i];
-        triangles_[i] = SphericalTriangle(p, poly.vertices[t[0]], poly.vertices[t[1]], poly.vertices[t[2]]);
-        solidAngle_ += triangles_[i].solidAngle();
+        tris.of[i] = SphericalTriangle(p, poly.vertices[t[0]], poly.vertices[t[1]], poly.vertices[t[2]]);
+        solidAngle_ += tris.of[i].solidAngle();
     }
 }
 
 // u picks a triangle in proportion to its solid angle, then places the sample within it.
 dvec3 SphericalPolygon::sample(double u, double v, double& distance) const {
-    if (isRectangle_) {
-        dvec3 toPoint = rectangle_.sample(u, v) - point_;
+    if (const auto* rectangle = std::get_if<SphericalRectangle>(&form_)) {
+        dvec3 toPoint = rectangle->sample(u, v) - point_;
         distance = glm::length(toPoint);
         return toPoint / distance;
     }
+    const SphericalTriangle* tris = std::get<Triangles>(form_).of;
     size_t n = polygon_->triangles.size(), i = 0;
     double target = u * solidAngle_, below = 0;
-    while (i + 1 < n && below + triangles_[i].solidAngle() < target) below += triangles_[i++].solidAngle();
-    double w = triangles_[i].solidAngle();
-    dvec3 dir = triangles_[i].sample(w > 0 ? std::clamp((target - below) / w, 0.0, 1.0) : 0.0, v);
+    while (i + 1 < n && below + tris[i].solidAngle() < target) below += tris[i++].solidAngle();
+    double w = tris[i].solidAngle();
+    dvec3 dir = tris[i].sample(w > 0 ? std::clamp((target - below) / w, 0.0, 1.0) : 0.0, v);
     distance = polygon_->planeDistance(Ray(point_, dir));
     return dir;
 }

@@ -2,6 +2,7 @@
 // rectangle for rectangles (most luminaires and windows), else its spherical triangles. Seen from either side.
 #pragma once
 #include <optional>
+#include <variant>
 
 #include "geometry/shapes.h"
 #include "sampling/spherical_rectangle.h"
@@ -31,11 +32,13 @@ public:
     dvec3 sample(double u, double v, double& distance) const;
 
 private:
+    struct Triangles {
+        SphericalTriangle of[kMaxTriangles];
+    };
     dvec3 point_{0};
     const Polygon* polygon_ = nullptr;
-    bool isRectangle_ = false;
-    SphericalRectangle rectangle_;
-    SphericalTriangle triangles_[kMaxTriangles];
+    // Only the form in use is made and copied: a view is made per shading point and source.
+    std::variant<std::monostate, SphericalRectangle, Triangles> form_;
     double solidAngle_ = 0;
 };
 

@@ -31,10 +31,10 @@ public:
         x1_ = x0_ + lengthX, y1_ = y0_ + lengthY;
         // Unit normals of the planes through p and each edge, written out in the rectangle's frame; the
         // rectangle's interior angles are the angles between consecutive ones.
-        dvec3 n0 = dvec3(0, z0_, -y0_) / std::hypot(z0_, y0_);
-        dvec3 n1 = dvec3(-z0_, 0, x1_) / std::hypot(z0_, x1_);
-        dvec3 n2 = dvec3(0, -z0_, y1_) / std::hypot(z0_, y1_);
-        dvec3 n3 = dvec3(z0_, 0, -x0_) / std::hypot(z0_, x0_);
+        dvec3 n0 = dvec3(0, z0_, -y0_) / std::sqrt(z0_ * z0_ + y0_ * y0_);
+        dvec3 n1 = dvec3(-z0_, 0, x1_) / std::sqrt(z0_ * z0_ + x1_ * x1_);
+        dvec3 n2 = dvec3(0, -z0_, y1_) / std::sqrt(z0_ * z0_ + y1_ * y1_);
+        dvec3 n3 = dvec3(z0_, 0, -x0_) / std::sqrt(z0_ * z0_ + x0_ * x0_);
         double g0 = std::acos(std::clamp(-glm::dot(n0, n1), -1.0, 1.0));
         double g1 = std::acos(std::clamp(-glm::dot(n1, n2), -1.0, 1.0));
         double g2 = std::acos(std::clamp(-glm::dot(n2, n3), -1.0, 1.0));
