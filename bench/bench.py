@@ -195,6 +195,13 @@ def time_to(points, target):
     return None
 
 
+def soonest(ladders, target):
+    """(time, name) of the ladder that first reaches an RMS error of target (see time_to), of a dict name ->
+    [(time, RMS error)]; None if none does."""
+    times = [(t, name) for name, pts in ladders.items() for t in [time_to(pts, target)] if t]
+    return min(times) if times else None
+
+
 def make_reference(rtrace, threads, path=REFERENCE, options=REF_OPTIONS):
     cmd = [rtrace] + options + ["-n", str(threads), SCENE]
     print("bench: making the reference (%d runs of: %s < grid.txt); this is done once and cached in %s"

@@ -35,10 +35,11 @@ VIEW = "seated"
 WIDTHS = [100, 320, 1000, 2000]
 REF_OPTIONS = ["-ab", "0", "-ds", ".01"]
 REF_RUNS = 4
-REF_PIXELS = 20000  # about this many pixels in each width's reference grid
+REF_PIXELS = 20000  # pixels in each width's reference
+TARGETS = (16, 12, 8, 5)  # % RMS at which times are compared
 # (program, series, [options of each rung]); -pj 0 is added to all. -ps 4 is both programs' default; Radiance's
 # -dj .7 at -ps 1 is its smoothest (least biased) direct light.
-LADDERS = [("brume", "Brume -ps 4", [["-ps", "4", "-ds", d] for d in ("1", ".25", ".1")]),
+LADDERS = [("brume", "Brume -ps 4", [["-ps", "4", "-ds", d] for d in ("1", ".5", ".25", ".1")]),
            ("radiance", "Radiance -ps 4 -dj 0", [["-ps", "4", "-dj", "0", "-ds", d] for d in (".5", ".25", ".1", ".05")]),
            ("radiance", "Radiance -ps 1 -dj .7", [["-ps", "1", "-dj", ".7", "-ds", d] for d in (".25", ".1")])]
 
@@ -126,6 +127,16 @@ def measure(progs, w, h, ref, tmp, repeat):
     return rows
 
 
+def soonest(rows, program, target):
+    """The wall time to an RMS error of target along the soonest of a program's series, or None."""
+    ladders = {}
+    for r in rows:
+        if r[0].startswith(program):
+            ladders.setdefault(r[0], []).append((r[2], r[4]))
+    found = bench.soonest(ladders, target)
+    return found[0] if found else None
+
+
 def write_table(results, header):
     lines = header + [""]
     for (w, h), (rows, meta, own) in results.items():
@@ -134,8 +145,19 @@ def write_table(results, header):
                   "| series | settings | wall s | CPU s | RMS % | p99 % | bias % |", "|---|---|---:|---:|---:|---:|---:|"]
         lines += ["| %s | `%s` | %.2f | %.2f | %.2f | %.1f | %+.2f |" % r for r in rows]
         lines.append("")
+    lines += ["Wall time to a given RMS error (s, interpolated log-log between the rungs of a series; the soonest "
+              "series): Brume / Radiance, and in brackets Radiance's time over Brume's (above 1: Brume is sooner):", "", "| picture | " + " | ".join("%g %%" % t for t in TARGETS) + " |",
+              "|---|" + "---:|" * len(TARGETS)]
+    for (w, h), (rows, meta, own) in results.items():
+        cells = []
+        for target in TARGETS:
+            b, r = (soonest(rows, who, target) for who in ("Brume", "Radiance"))
+            cells.append("%s / %s%s" % ("%.2f" % b if b else "–", "%.2f" % r if r else "–",
+                                        " (%.1f×)" % (r / b) if b and r else ""))
+        lines.append("| %d × %d | %s |" % (w, h, " | ".join(cells)))
     with open(TABLE, "w") as f:
-        f.write("\n".join(lines))
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines[-len(results) - 4:]))
 
 
 def plot(results):
