@@ -195,9 +195,12 @@ def time_to(points, target):
     return None
 
 
-def soonest(ladders, target):
-    """(time, name) of the ladder that first reaches an RMS error of target (see time_to), of a dict name ->
-    [(time, RMS error)]; None if none does."""
+def soonest(rungs, target):
+    """(time, name) of the ladder that first reaches an RMS error of target (see time_to), of rungs given as
+    (ladder name, time, RMS error); None if none does."""
+    ladders = {}
+    for name, t, e in rungs:
+        ladders.setdefault(name, []).append((t, e))
     times = [(t, name) for name, pts in ladders.items() for t in [time_to(pts, target)] if t]
     return min(times) if times else None
 

@@ -147,9 +147,7 @@ def image_reference(brume_rpict, tmp, remake):
     # nice: the reference takes 10-20 minutes on two cores and should yield to anything else
     rgb, se, meta = rpict.converged(brume_rpict, "%s_all_bounces" % VIEW, VIEW, IMAGE_COMMON, IMAGE_REFERENCE, tmp,
                                     remake, prefix=("nice", "-n", "19"))
-    lr = rpict.luminance(rgb)
-    mask = lr > rpict.FLOOR * lr.mean()
-    noise = 100 * float(np.sqrt(np.mean((se[mask] / lr[mask]) ** 2)))
+    noise = rpict.own_error(rgb, se)
     return rgb, noise, "%s, mean of %d runs, %s s, Brume %s, %s; own error RMS %.2f %% (spread), %.2f %% (halves)" % (
         meta["command"].replace(" examples/office/office.rad", ""), meta["runs"], meta["wall_s"], meta["brume_commit"],
         meta["date"], noise, meta["split_half_rms_pct"])

@@ -59,10 +59,9 @@ RUNGS = [  # (family, program, options)
 def reference(brume_rpict, tmp, remake):
     """(mean RGB, metadata): cached, or made from REF_RUNS runs on all threads."""
     key = "%s %s %d" % (bench.sha256(SCENE)[:16], " ".join(VIEW + REF_OPTIONS), REF_RUNS)
-    if not remake and os.path.exists(REFERENCE + ".npz") and os.path.exists(REFERENCE + ".json"):
-        meta = json.load(open(REFERENCE + ".json"))
-        if meta.get("key") == key:
-            return np.load(REFERENCE + ".npz")["rgb"], meta
+    cached = rpict.load_cached(REFERENCE, key, remake)
+    if cached:
+        return cached[0]["rgb"], cached[1]
     cmd = [brume_rpict] + VIEW + REF_OPTIONS + ["-u+", "-n", str(os.cpu_count() or 1), SCENE]
     print("making the reference: %d runs of rpict %s (about 10 CPU-minutes each)" % (REF_RUNS, " ".join(cmd[1:-1])),
           flush=True)
@@ -77,9 +76,7 @@ def reference(brume_rpict, tmp, remake):
     meta = {"key": key, "command": "rpict " + " ".join(cmd[1:-1]) + " bench/daylight/deep.rad", "runs": REF_RUNS,
             "cpu_s": round(cpu), "brume_commit": bench.git_commit(), "date": time.strftime("%Y-%m-%d"),
             "own_rms_pct": own}
-    np.savez_compressed(REFERENCE + ".npz", rgb=rgb.astype(np.float32))
-    with open(REFERENCE + ".json", "w") as f:
-        json.dump(meta, f, indent=1)
+    rpict.save_cached(REFERENCE, {"rgb": rgb}, meta)
     return rgb, meta
 
 
@@ -128,11 +125,7 @@ def main():
         lines.append("Time to %.1f %% RMS (CPU s, interpolated log-log between the rungs of each family; the "
                      "soonest family):" % target)
         for who in ("Brume", "Radiance"):
-            ladders = {}
-            for r in rows:
-                if r[0].startswith(who):
-                    ladders.setdefault(r[0], []).append((r[2], r[3]))
-            found = bench.soonest(ladders, target)
+            found = bench.soonest([(r[0], r[2], r[3]) for r in rows if r[0].startswith(who)], target)
             lines.append("- %s: %s" % (who, "%.2f s (%s)" % found if found else "not reached"))
     text = "\n".join(lines) + "\n"
     print(text)

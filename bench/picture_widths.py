@@ -64,17 +64,14 @@ def pixels(w, h):
     return np.sort(np.random.default_rng(w * 100003 + h).choice(w * h, REF_PIXELS, replace=False))
 
 
-def reference(bindir, w, h, tmp, remake):
-    """(mean RGB at the grid's pixels [rows, cols, 3], its per-pixel standard error of luminance, metadata), cached."""
-    chosen = pixels(w, h)
+def reference(bindir, w, h, chosen, tmp, remake):
+    """(mean RGB at the chosen pixels [n, 1, 3], its per-pixel standard error of luminance, metadata), cached."""
     name = os.path.join(CACHE, "widths_%s_%d" % (VIEW, w))
     key = hashlib.sha256(json.dumps([bench.sha256(bench.SCENE), rpict.VIEWS[VIEW][1], w, h, len(chosen), REF_OPTIONS,
                                      REF_RUNS]).encode()).hexdigest()[:16]
-    if not remake and os.path.exists(name + ".npz") and os.path.exists(name + ".json"):
-        meta = json.load(open(name + ".json"))
-        if meta.get("key") == key:
-            d = np.load(name + ".npz")
-            return d["rgb"], d["se"], meta
+    cached = rpict.load_cached(name, key, remake)
+    if cached:
+        return cached[0]["rgb"], cached[0]["se"], cached[1]
     rays = subprocess.run([os.path.join(bindir, "vwrays"), "-ff", "-pj", "0"] + rpict.VIEWS[VIEW][1] + size(w),
                           capture_output=True, check=True).stdout
     rays = np.frombuffer(rays, np.float32).reshape(h * w, 6)[chosen]
@@ -92,22 +89,13 @@ def reference(bindir, w, h, tmp, remake):
     runs = np.stack(runs)
     rgb = runs.mean(axis=0)
     se = rpict.luminance(runs).std(axis=0, ddof=1) / np.sqrt(REF_RUNS)
-    meta = {"key": key, "command": "vwrays -ff -pj 0 | rtrace " + " ".join(cmd[1:-1]), "pixels": len(chosen), "runs": REF_RUNS,
-            "wall_s": round(time.perf_counter() - wall, 1), "brume_commit": bench.git_commit()}
-    os.makedirs(CACHE, exist_ok=True)
-    np.savez_compressed(name + ".npz", rgb=rgb.astype(np.float32), se=se.astype(np.float32))
-    with open(name + ".json", "w") as f:
-        json.dump(meta, f, indent=1)
+    meta = {"key": key, "command": "vwrays -ff -pj 0 | rtrace " + " ".join(cmd[1:-1]), "pixels": len(chosen),
+            "runs": REF_RUNS, "wall_s": round(time.perf_counter() - wall, 1), "brume_commit": bench.git_commit()}
+    rpict.save_cached(name, {"rgb": rgb, "se": se}, meta)
     return rgb, se, meta
 
 
-def own_error(ref, se):
-    lr = rpict.luminance(ref)
-    mask = lr > rpict.FLOOR * lr.mean()
-    return 100 * float(np.sqrt(np.mean((se[mask] / lr[mask]) ** 2)))
-
-
-def measure(progs, w, h, ref, tmp, repeat):
+def measure(progs, w, h, chosen, ref, tmp, repeat):
     rows = []
     out = os.path.join(tmp, "picture.hdr")
     for prog, label, rungs in LADDERS:
@@ -120,7 +108,7 @@ def measure(progs, w, h, ref, tmp, repeat):
             picture, wall, cpu = rpict.timed_picture(cmd, env, out, repeat)
             if picture.shape[:2] != (h, w):
                 sys.exit("bench/picture_widths.py: %s made %s pixels, not %d x %d" % (prog, picture.shape[:2], w, h))
-            rms, p99, bias = rpict.errors(picture.reshape(h * w, 1, 3)[pixels(w, h)], ref)
+            rms, p99, bias = rpict.errors(picture.reshape(h * w, 1, 3)[chosen], ref)
             rows.append((label, " ".join(opts), wall, cpu, rms, p99, bias))
             print("  %-24s %-28s %8.2f %8.2f %7.2f %7.1f %+7.2f" % (label, " ".join(opts), wall, cpu, rms, p99, bias),
                   flush=True)
@@ -129,11 +117,7 @@ def measure(progs, w, h, ref, tmp, repeat):
 
 def soonest(rows, program, target):
     """The wall time to an RMS error of target along the soonest of a program's series, or None."""
-    ladders = {}
-    for r in rows:
-        if r[0].startswith(program):
-            ladders.setdefault(r[0], []).append((r[2], r[4]))
-    found = bench.soonest(ladders, target)
+    found = bench.soonest([(r[0], r[2], r[4]) for r in rows if r[0].startswith(program)], target)
     return found[0] if found else None
 
 
@@ -211,11 +195,12 @@ def main():
         for width in [int(x) for x in a.widths.split(",")]:
             w, h = resolution(os.path.join(bindir, "vwrays"), width)
             print("\n== %d x %d ==" % (w, h))
-            ref, se, meta = reference(bindir, w, h, tmp, a.remake_reference)
-            own = own_error(ref, se)
+            chosen = pixels(w, h)
+            ref, se, meta = reference(bindir, w, h, chosen, tmp, a.remake_reference)
+            own = rpict.own_error(ref, se)
             print("  reference: %s, %d pixels, %d runs; its own error: RMS %.2f %%" % (
                 meta["command"], meta["pixels"], meta["runs"], own))
-            results[(w, h)] = (measure(progs, w, h, ref, tmp, a.repeat), meta, own)
+            results[(w, h)] = (measure(progs, w, h, chosen, ref, tmp, a.repeat), meta, own)
     header.append("- load average at the end %.2f; bench total %.0f s" % (os.getloadavg()[0], time.perf_counter() - start))
     write_table(results, header)
     plot(results)

@@ -160,6 +160,33 @@ def scene_key(view, common, options):
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
+def load_cached(path, key, remake):
+    """The arrays and metadata saved as path.npz and path.json (see save_cached) if their key is `key` and remake is
+    false; else None, saying so if they are out of date."""
+    if remake or not (os.path.exists(path + ".npz") and os.path.exists(path + ".json")):
+        return None
+    meta = json.load(open(path + ".json"))
+    if meta.get("key") != key:
+        print("  %s is out of date (scene, view or options changed): remaking it" % os.path.relpath(path, bench.ROOT))
+        return None
+    return dict(np.load(path + ".npz")), meta
+
+
+def save_cached(path, arrays, meta):
+    """Saves arrays (as float32) in path.npz and meta, which holds the key load_cached checks, in path.json."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    np.savez_compressed(path + ".npz", **{k: v.astype(np.float32) for k, v in arrays.items()})
+    with open(path + ".json", "w") as f:
+        json.dump(meta, f, indent=1)
+
+
+def own_error(ref, se):
+    """A reference's own RMS error in %: its per-pixel standard error of luminance over the pixels above FLOOR."""
+    lr = luminance(ref)
+    mask = lr > FLOOR * lr.mean()
+    return 100 * float(np.sqrt(np.mean((se[mask] / lr[mask]) ** 2)))
+
+
 def reference(brume_rpict, ab, view, tmp, remake):
     """The converged picture of a case of this bench: see converged."""
     return converged(brume_rpict, "%s_ab%d" % (view, ab), view, COMMON, REFERENCE[ab], tmp, remake)
@@ -170,12 +197,9 @@ def converged(brume_rpict, name, view, common, options, tmp, remake, prefix=()):
     common and options), cached as CACHE/name: (mean RGB, per-pixel standard error of the mean luminance, metadata)."""
     name = os.path.join(CACHE, name)
     key = scene_key(view, common, options)
-    if not remake and os.path.exists(name + ".npz") and os.path.exists(name + ".json"):
-        meta = json.load(open(name + ".json"))
-        if meta.get("key") == key:
-            d = np.load(name + ".npz")
-            return d["rgb"], d["se"], meta
-        print("  %s is out of date (scene, view or options changed): remaking it" % os.path.relpath(name, bench.ROOT))
+    cached = load_cached(name, key, remake)
+    if cached:
+        return cached[0]["rgb"], cached[0]["se"], cached[1]
     threads = os.cpu_count() or 1
     cmd = [brume_rpict] + VIEWS[view][1] + common + options + ["-u+", "-n", str(threads), bench.SCENE]
     print("  making the reference %s: the mean of %d runs of rpict %s (cached in %s)" % (
@@ -200,10 +224,7 @@ def converged(brume_rpict, name, view, common, options, tmp, remake, prefix=()):
     meta = {"key": key, "command": "rpict " + " ".join(cmd[1:-1]) + " examples/office/office.rad", "runs": REF_RUNS,
             "wall_s": round(wall, 1), "brume_commit": bench.git_commit(), "date": time.strftime("%Y-%m-%d %H:%M:%S"),
             "split_half_rms_pct": 100 * split}
-    os.makedirs(CACHE, exist_ok=True)
-    np.savez_compressed(name + ".npz", rgb=rgb.astype(np.float32), se=se.astype(np.float32))
-    with open(name + ".json", "w") as f:
-        json.dump(meta, f, indent=1)
+    save_cached(name, {"rgb": rgb, "se": se}, meta)
     return rgb, se, meta
 
 
@@ -411,7 +432,7 @@ def main():
             ref, se, meta = reference(brume, ab, view, tmp, a.remake_reference)
             lr = luminance(ref)
             mask = lr > FLOOR * lr.mean()
-            ref_se = 100 * float(np.sqrt(np.mean((se[mask] / lr[mask]) ** 2)))
+            ref_se = own_error(ref, se)
             print("  reference: the mean of %d runs (Brume %s, %s); its own error: RMS %.2f %% (spread of the "
                   "runs), %.2f %% (two halves); %d of %d pixels above the floor" % (
                       meta["runs"], meta["brume_commit"], meta["date"], ref_se, meta["split_half_rms_pct"],
