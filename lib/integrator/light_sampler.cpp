@@ -55,6 +55,13 @@ double LightSampler::misWeight(const Light& light, const PathState& state, const
 // also sampled by rays share it with them by the power heuristic.
 Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,
                                 PathContext& ctx, const SourceShares* shares) const {
+    Spectrum value = sourcesLd(at, surface, state, ctx, shares);
+    if (ctx.smoke.hasFlames()) value += flames_.sample(at, surface, state, subdivision(state), ctx);
+    return value;
+}
+
+Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                                 PathContext& ctx, const SourceShares* shares) const {
     const std::vector<Light>& lights = scene_.lights();
     if (state.ambientLevel > 0 && !at.sampledByRays())
         if (auto one = oneSourceOf(at, surface, state, ctx, shares)) return *one;

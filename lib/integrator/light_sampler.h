@@ -2,6 +2,7 @@
 // flat mirrors, along shadow rays that cross clear glass, antimatter and media — one routine for surface
 // and medium points (pbrt-v4's SampleLd), which weighs each source sample by the scatterer's response.
 #pragma once
+#include "integrator/flame_lights.h"
 #include "integrator/hit_shading.h"
 #include "integrator/media.h"
 #include "integrator/path_context.h"
@@ -24,10 +25,11 @@ class LightSampler {
 public:
     LightSampler(const RenderScene& scene, const RenderSettings& settings, const HitShading& shading,
                  const Media& media, const ShadowRays& shadowRays)
-        : scene_(scene), settings_(settings), shading_(shading), media_(media), shadowRays_(shadowRays) {}
+        : scene_(scene), settings_(settings), shading_(shading), media_(media), shadowRays_(shadowRays),
+          flames_(shadowRays) {}
 
-    // The sources' light scattered toward the viewer by `at` (leaving `surface`, none in a medium), each
-    // source's taking its share (`shares`, if given) where it is not found.
+    // The sources' and the flames' light scattered toward the viewer by `at` (leaving `surface`, none in a
+    // medium), each source's taking its share (`shares`, if given) where it is not found.
     Spectrum sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
                       const SourceShares* shares = nullptr) const;
     // One source's light scattered toward the viewer by `at`.
@@ -42,11 +44,15 @@ public:
     // The multiple-importance weight of a source met by a drawn ray (power heuristic against next-event
     // estimation's density × sample count at the ray's origin); `hit` on the source, null at infinity.
     double misWeight(const Light& light, const PathState& state, const Ray& ray, const SurfaceHit* hit) const;
+    // Flames as sources: for the share of their light rays drawn from lobes keep.
+    const FlameLights& flames() const { return flames_; }
     // Whether next-event estimation reaches sources through mirror images (-dr > 0 and some flat mirror).
     bool mirrorImagesOn() const { return settings_.directRelays > 0 && !scene_.planarMirrors().empty(); }
 
 private:
     double subdivision(const PathState& state) const;
+    Spectrum sourcesLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
+                       const SourceShares* shares) const;
     bool exactDirect(const PathState& state) const { return state.depth == 0; }
     int thresholdedCount(int count, double share) const;
     bool samplesSource(const Light& light, const SurfaceId& surface) const;
@@ -66,6 +72,7 @@ private:
     const HitShading& shading_;
     const Media& media_;
     const ShadowRays& shadowRays_;
+    FlameLights flames_;
 };
 
 }  // namespace brume

@@ -80,7 +80,16 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
         if (!collision) return weight.isBlack() ? weight : behind(weight);
         dvec3 point = ray.org + *collision * ray.dir;
         Spectrum carried = weight / extinction(*collision);  // times σ_s: the albedo times what tracking carried
-        Spectrum value = emits ? smoke.emission(point) * carried : Spectrum(0.f);
+        Spectrum value(0.f);
+        if (emits) {
+            // A ray drawn from a lobe keeps its share of the flames' light against next-event estimation, as
+            // of a source it meets; what no flame sample can reach is its own.
+            Spectrum emitted = smoke.emission(point) * carried;
+            std::optional<double> share;
+            if (state.kind == PathState::Kind::Sampled) share = lights_.flames().rayShare(smoke, state, ray.dir);
+            if (!share) value = emitted;
+            else if (sourceShare) *sourceShare += emitted * float(*share);
+        }
         PhaseMixture phase;
         smoke.scattering(point, h, carried, phase);
         if (!phase.empty()) value += scattered(point, ray.dir, phase, state, ctx);
@@ -123,9 +132,7 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
                                                 [](const MajorantSegment& a, const MajorantSegment& b) {
                                                     return a.t0 == b.t0 && a.t1 == b.t1 && a.majorant == b.majorant;
                                                 });
-    double loose = 0;
-    for (const MajorantSegment& s : dense)  // (the bounds' own rounding is not looseness)
-        if (s.minorant < s.majorant * (1 - 1e-5)) loose += s.t1 - s.t0;
+    double loose = looseLength(dense);
     std::vector<SourceDistance> sources;
     if (smoke.scatters(h))
         sources = sourceDistances(scene_.lights(), ray, dense, HenyeyGreenstein(smoke.asymmetry(ray, start, end, h)),

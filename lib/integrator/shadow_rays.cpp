@@ -6,15 +6,34 @@ using namespace integrator_detail;
 
 Spectrum ShadowRays::toSurface(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
                                PathState& state, PathContext& ctx, SurfaceHit* reached) const {
+    return walk(ray, target, toInfinity, targetKind, state, ctx, reached,
+                [&](const Ray& stretch, double end, const HomogeneousMedium& h, const Spectrum&) {
+                    return media_.transmittance(stretch, 0, end, h, ctx.smoke, ctx.rng);
+                });
+}
+
+Spectrum ShadowRays::flameLightAlong(const Ray& ray, PathState state, PathContext& ctx) const {
+    Spectrum sum(0.f);
+    walk(ray, SurfaceId{}, false, Emitter::Kind::Light, state, ctx, nullptr,
+         [&](const Ray& stretch, double end, const HomogeneousMedium& h, const Spectrum& before) {
+             Spectrum t;
+             sum += before * ctx.smoke.emittedAlong(stretch, 0, end, h, ctx.rng, t);
+             return t;
+         });
+    return sum;
+}
+
+template <class Stretch>
+Spectrum ShadowRays::walk(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind,
+                          PathState& state, PathContext& ctx, SurfaceHit* reached, const Stretch& stretch) const {
     Spectrum t(1.f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         auto hit = scene_.geometry().intersect(ray);
         if (media_.present()) {
-            t *= media_.transmittance(ray, 0, hit ? hit->t : ray.tmax,
-                                      media_.homogeneousAlong(ray, hit ? &*hit : nullptr, state), ctx.smoke, ctx.rng);
+            t *= stretch(ray, hit ? hit->t : ray.tmax, media_.homogeneousAlong(ray, hit ? &*hit : nullptr, state), t);
             if (t.isBlack()) return t;
         }
-        if (!hit) return toInfinity ? t : Spectrum(0.f);
+        if (!hit) return toInfinity || std::isfinite(ray.tmax) ? t : Spectrum(0.f);
         // The source itself: its pattern is the caller's, only its material matters here, so the shading
         // most shadow rays end on is skipped.
         bool onTarget = hit->surface == target;
@@ -25,6 +44,7 @@ Spectrum ShadowRays::toSurface(Ray ray, const SurfaceId& target, bool toInfinity
         if (shading_.passes(mat, glm::dot(hit->normal, ray.dir) > 0, state)) {
             ray.org = hit->point;
             ray.leaving = hit->surface;
+            ray.tmax -= hit->t;
             continue;
         }
         if (onTarget) {
@@ -47,6 +67,7 @@ Spectrum ShadowRays::toSurface(Ray ray, const SurfaceId& target, bool toInfinity
         }
         ray.org = hit->point;
         ray.leaving = hit->surface;
+        ray.tmax -= hit->t;
     }
     return Spectrum(0.f);
 }

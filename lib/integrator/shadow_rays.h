@@ -22,8 +22,18 @@ public:
     // `reached` receives the hit on the target.
     Spectrum toSurface(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
                        PathContext& ctx, SurfaceHit* reached) const;
+    // The light flames emit toward ray.org along it, up to ray.tmax or what stops shadow rays first: ∫ T σ_a B dt,
+    // T the transmission of what lies between (ParticipatingMedia::emittedAlong in each stretch of media).
+    Spectrum flameLightAlong(const Ray& ray, PathState state, PathContext& ctx) const;
 
 private:
+    // The walk both take: surfaces crossed, passed or stopping it; `stretch(ray, end, h, t)` gives the media's
+    // transmission over [0, end] of each stretch between surfaces (h the homogeneous medium there, t the
+    // transmission before it).
+    template <class Stretch>
+    Spectrum walk(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
+                  PathContext& ctx, SurfaceHit* reached, const Stretch& stretch) const;
+
     const RenderScene& scene_;
     const HitShading& shading_;
     const Media& media_;

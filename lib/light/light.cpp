@@ -60,15 +60,18 @@ Light::Light(const dvec3& direction, double angle, const Emitter* emitter, int o
 // With a margin of a few ulps, so a hemisphere's edge (the horizon of a 180° sky) belongs to it.
 bool Light::distantContains(const dvec3& d) const { return 1 - glm::dot(d, direction_) <= oneMinusCos_ + 1e-12; }
 
-int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
+int subdividedSampleCount(double angularSize, double perAxis, double ratio, double weight) {
     if (ratio <= 0) return 1;
+    int n = static_cast<int>(std::ceil(std::min(16.0, perAxis * angularSize * weight / ratio)));
+    return std::max(1, n * n);
+}
+
+int Light::sampleCount(const dvec3& p, double ratio, double weight) const {
     double angularSize = isDistant() ? 2 * std::sqrt(2 * oneMinusCos_) : size_ / std::max(glm::length(center_ - p), 1e-300);
     // One stratified sample per axis where Radiance makes one partition for sources whose unoccluded diffuse
     // light has a closed form (shadow rays then only find what is blocked, see LightSampler::directFrom); two for
     // the others, whose random positions need them to be as smooth as Radiance's fixed cell centres.
-    double perCell = hasClosedForm() ? 1 : 2;
-    int n = static_cast<int>(std::ceil(std::min(16.0, perCell * angularSize * weight / ratio)));
-    return std::max(1, n * n);
+    return subdividedSampleCount(angularSize, hasClosedForm() ? 1 : 2, ratio, weight);
 }
 
 double Light::roughSolidAngle(const dvec3& p) const {

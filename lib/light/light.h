@@ -28,6 +28,11 @@ struct LightView {
     double solidAngle = 0;  // > 0 when the polygon is sampled by solid angle
 };
 
+// Radiance-like subdivision: how many samples a source of angular size `angularSize` (radians, its size over
+// its distance) gets for the -ds ratio and a ray's weight: `perAxis` per ratio of angle on each of two axes
+// (at most 16), so at least 1.
+int subdividedSampleCount(double angularSize, double perAxis, double ratio, double weight);
+
 class Light {
 public:
     // An emitting surface, in world coordinates; `id` tells it from others. A patterned source's radiance

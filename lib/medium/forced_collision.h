@@ -81,6 +81,15 @@ private:
     double length_ = 0;
 };
 
+// The length of the stretches whose majorant may exceed the extinction by far (a minorant below it, beyond
+// the bounds' own rounding): smoke's cells, where UniformCollision guards ForcedCollision.
+inline double looseLength(std::span<const MajorantSegment> segments) {
+    double loose = 0;
+    for (const MajorantSegment& s : segments)
+        if (s.minorant < s.majorant * (1 - 1e-5)) loose += s.t1 - s.t0;
+    return loose;
+}
+
 // Distances over the stretches `segments` cover, drawn in proportion to 1/r² from a point beside the ray
 // (equiangular sampling: Kulla & Fajardo 2012, "Importance sampling techniques for path tracing in
 // participating media") times the phase function that turns the point's light toward the ray's origin and

@@ -6,19 +6,9 @@ namespace brume {
 
 namespace {
 
-// Whether the ray meets the box between start and end (slabs; closed, so grazing rays count).
+// Whether the ray meets the box between start and end.
 bool crosses(const Bounds3& b, const Ray& ray, double start, double end) {
-    if (b.empty()) return false;
-    for (int a = 0; a < 3; ++a) {
-        if (ray.dir[a] == 0) {
-            if (ray.org[a] < b.lo[a] || ray.org[a] > b.hi[a]) return false;
-            continue;
-        }
-        double t0 = (b.lo[a] - ray.org[a]) / ray.dir[a], t1 = (b.hi[a] - ray.org[a]) / ray.dir[a];
-        start = std::max(start, std::min(t0, t1));
-        end = std::min(end, std::max(t0, t1));
-    }
-    return start <= end;
+    return clipToBox(b, ray.org, ray.dir, start, end);
 }
 
 // `sum` (in order, covering what it covers) with the piecewise-constant `add` added over its stretches.
@@ -56,6 +46,69 @@ double bandOf(const Spectrum& s, ParticipatingMedia::Band band) {
 }
 
 }  // namespace
+
+ParticipatingMedia::ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(std::move(smoke)) {
+    double power = 0;
+    for (size_t i = 0; i < smoke_.size(); ++i)
+        if (const EmissionCells& cells = smoke_[i].flames(); !cells.empty()) {
+            flames_.push_back({i, cells.power()});
+            power += cells.power();
+            flameBox_.include(cells.box());
+        }
+    for (Flame& f : flames_) f.share /= power;
+}
+
+dvec3 ParticipatingMedia::sampleFlame(double u0, double u1, double u2, double u3) const {
+    size_t i = 0;
+    for (; i + 1 < flames_.size() && u0 >= flames_[i].share; ++i) u0 -= flames_[i].share;
+    return smoke_[flames_[i].volume].flames().sample(std::min(u0 / flames_[i].share, 0x1.fffffffffffffp-1), u1, u2, u3);
+}
+
+double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3& dir) const {
+    double sum = 0;
+    for (const Flame& f : flames_) sum += f.share * smoke_[f.volume].flames().directionDensity(from, dir);
+    return sum;
+}
+
+Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                                          Random& random, Spectrum& transmittance) const {
+    auto stretch = [&](double t0, double t1) {
+        Spectrum t = h.transmittance(t1 - t0);
+        return t.isBlack() ? t : t * smokeTransmittance(ray, t0, t1, random);
+    };
+    std::vector<MajorantSegment> segments;
+    majorants(ray, start, end, &h, segments);
+    double depth = 0;
+    for (const MajorantSegment& s : segments) depth += s.majorant * (s.t1 - s.t0);
+    Spectrum sum(0.f);
+    if (!(depth > 0)) {
+        transmittance = stretch(start, end);
+        return sum;
+    }
+    const double step = std::min(kStep, depth / kMinPoints);
+    Spectrum t(1.f);
+    double at = start, before = 0;  // the last point, and τ̄ up to the start of the current segment
+    size_t i = 0;
+    for (double tau = random.uniform() * step; tau < depth && !t.isBlack(); tau += step) {
+        for (double d; i + 1 < segments.size() && before + (d = segments[i].majorant * (segments[i].t1 - segments[i].t0)) <= tau;)
+            before += d, ++i;
+        const MajorantSegment& s = segments[i];
+        double next = std::min(s.t1, s.t0 + (tau - before) / s.majorant);
+        t *= stretch(at, next);
+        at = next;
+        sum.addProduct(t, emission(ray.at(next)), float(step / s.majorant));
+        // Roulette once T is below 1% in every band: survivors carry T up.
+        if (double most = t.maxValue(); most < 0.01) {
+            if (random.uniform() * 0.01 >= most) {
+                transmittance = Spectrum(0.f);
+                return sum;
+            }
+            t *= float(0.01 / most);
+        }
+    }
+    transmittance = t.isBlack() ? t : t * stretch(at, end);
+    return sum;
+}
 
 bool ParticipatingMedia::smokeAlong(const Ray& ray, double start, double end) const {
     return std::any_of(smoke_.begin(), smoke_.end(),

@@ -15,7 +15,7 @@ namespace brume {
 class ParticipatingMedia {
 public:
     ParticipatingMedia() = default;
-    explicit ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(std::move(smoke)) {}
+    explicit ParticipatingMedia(std::vector<SmokeVolume> smoke);
 
     bool hasSmoke() const { return !smoke_.empty(); }
     // Whether some smoke may lie on the ray between t = start and t = end (its grid's box is crossed).
@@ -24,6 +24,22 @@ public:
     bool emits() const;
     // What the flames emit per unit length at p (see SmokeVolume::emission).
     Spectrum emission(const dvec3& p) const;
+
+    // Flames as light sources: points drawn where they glow (each smoke's EmissionCells, chosen in proportion
+    // to its power), the density per steradian of the directions such draws give from a point, and the box
+    // they lie in. No flame: none, and every direction's density is 0.
+    bool hasFlames() const { return !flames_.empty(); }
+    dvec3 sampleFlame(double u0, double u1, double u2, double u3) const;
+    double flameDirectionDensity(const dvec3& from, const dvec3& dir) const;
+    const Bounds3& flameBox() const { return flameBox_; }
+    // The light the flames emit toward ray.org along [start, end], ∫ T σ_a B dt with T from `start` through
+    // `h` and the smoke, and in `transmittance` T over the whole stretch; both unbiased. T ε/σ̄ is summed at
+    // points a jittered, even step of the majorant's optical depth τ̄ apart (a jittered grid integrates exactly
+    // in expectation), T carried from point to point by the smoke's own estimate: a thick flame's light comes
+    // from its first few steps, whatever its cells' bounds (roulette ends the walk once T is small), and a thin
+    // one gets at least kMinPoints points.
+    Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
+                          Spectrum& transmittance) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
     bool scatters(const HomogeneousMedium& h) const;
     // The Henyey–Greenstein g of what scatters along [start, end], to guide sampling: the mean g of the
@@ -46,7 +62,16 @@ public:
     void scattering(const dvec3& p, const HomogeneousMedium& h, const Spectrum& scale, PhaseMixture& out) const;
 
 private:
+    static constexpr int kMinPoints = 8;
+    static constexpr double kStep = 0.25;  // of τ̄ at most, between points
+
+    struct Flame {
+        size_t volume;  // in smoke_ (an index: the media may be moved or copied)
+        double share;   // of the draws
+    };
     std::vector<SmokeVolume> smoke_;
+    std::vector<Flame> flames_;
+    Bounds3 flameBox_;
 };
 
 }  // namespace brume

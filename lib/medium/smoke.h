@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "medium/emission_cells.h"
 #include "medium/grid_sequence.h"
 #include "medium/majorant_grid.h"
 #include "sampling/random.h"
@@ -44,6 +45,8 @@ public:
     // What the smoke emits per unit length at p: σ_a(p)·B(T(p)), B Planck's radiance (as emitted light adds
     // along a ray: ∫ T σ_a B dt).
     Spectrum emission(const dvec3& p) const;
+    // Where the flames glow, for next-event estimation (empty where the smoke does not emit).
+    const EmissionCells& flames() const { return flames_; }
     const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
     const Spectrum& albedo() const { return description_.albedo; }
     double g() const { return description_.g; }
@@ -72,6 +75,7 @@ private:
     // Black bodies every kBlackbodyStep kelvin from 0 (interpolated between): Planck per sample costs too much.
     static constexpr double kBlackbodyStep = 25, kHottest = 6000;
     std::vector<Spectrum> blackbodies_;
+    EmissionCells flames_;
 };
 
 }  // namespace brume

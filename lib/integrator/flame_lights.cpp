@@ -1,0 +1,57 @@
+#include "integrator/flame_lights.h"
+
+#include <limits>
+
+#include "light/light.h"
+
+namespace brume {
+
+using namespace integrator_detail;
+
+// One sample per ratio of the box's angular size on each axis: each sample's shadow ray is already an
+// estimate along the whole direction, not of one point.
+int FlameLights::sampleCount(const ParticipatingMedia& smoke, const dvec3& point, double subdivision, double weight) {
+    const Bounds3& box = smoke.flameBox();
+    double size = glm::length(box.hi - box.lo);
+    double angularSize = size / std::max(glm::length(0.5 * (box.lo + box.hi) - point), 0.5 * size);
+    return subdividedSampleCount(angularSize, 1, subdivision, weight);
+}
+
+Spectrum FlameLights::sample(const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                             double subdivision, PathContext& ctx) const {
+    const ParticipatingMedia& smoke = ctx.smoke;
+    Spectrum sum(0.f);
+    if (!smoke.hasFlames()) return sum;
+    const dvec3& p = at.point();
+    int n = sampleCount(smoke, p, subdivision, state.weight);
+    uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    for (int k = 0; k < n; ++k) {
+        double u0, u1;
+        sobol2D(k, scramble, u0, u1);
+        double u2 = ctx.rng.uniform(), u3 = ctx.rng.uniform();
+        dvec3 toward = smoke.sampleFlame(u0, u1, u2, u3) - p;
+        double length = glm::length(toward);
+        if (!(length > 0)) continue;
+        dvec3 dir = toward / length;
+        double density = smoke.flameDirectionDensity(p, dir);
+        if (!(density > 0)) continue;
+        Spectrum f = at.response(dir, density * n);
+        if (f.isBlack()) continue;
+        // Along the direction, through the flames' box.
+        double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+        if (!clipToBox(smoke.flameBox(), p, dir, t0, t1)) continue;
+        Spectrum le = shadowRays_.flameLightAlong(Ray{p, dir, t1, surface}, state, ctx);
+        if (!le.isBlack()) sum.addProduct(f, le, float(1 / (density * n)));
+    }
+    return sum;
+}
+
+std::optional<double> FlameLights::rayShare(const ParticipatingMedia& smoke, const PathState& state,
+                                            const dvec3& dir) const {
+    double density = smoke.flameDirectionDensity(state.from, dir);
+    if (!(density > 0)) return std::nullopt;
+    int n = sampleCount(smoke, state.from, state.fromSubdivision, state.fromWeight);
+    return powerHeuristic(state.sampledDensity, density * n);
+}
+
+}  // namespace brume

@@ -1,0 +1,40 @@
+// Flames as light sources: next-event estimation of the light glowing smoke sends to a surface or a medium
+// point (one routine for both, through a Scatterer), weighed by the power heuristic against the rays drawn
+// from the point's lobes or phase function, which keep only their share of the flame light they meet
+// (rayShare; Lambertian lobes leave all of it here, as they do every source's).
+//
+// A sample draws a point where the flames glow (ParticipatingMedia::sampleFlame) for its direction only: along
+// that direction, through the flames' box, the light the smoke emits toward the point, ∫ T σ_a B dt up to
+// whatever stops shadow rays, is estimated whole (ShadowRays::flameLightAlong), so that a thick flame's light
+// comes from its near side and a thin one's from all along. The direction's density per steradian, in closed
+// form (flameDirectionDensity), is what the lobes' rays are weighed against.
+#pragma once
+#include <optional>
+
+#include "integrator/media.h"
+#include "integrator/path_context.h"
+#include "integrator/scatterer.h"
+#include "integrator/shadow_rays.h"
+
+namespace brume {
+
+class FlameLights {
+public:
+    explicit FlameLights(const ShadowRays& shadowRays) : shadowRays_(shadowRays) {}
+
+    // The flames' light scattered toward the viewer by `at` (leaving `surface`), by sampleCount samples for
+    // the -ds ratio `subdivision` there.
+    Spectrum sample(const Scatterer& at, const SurfaceId& surface, const PathState& state, double subdivision,
+                    PathContext& ctx) const;
+    // The share of the flame light met along `dir` that a ray drawn from a lobe keeps (`state` the ray's, as
+    // LightSampler::drawnFrom made it): its power-heuristic weight against the samples drawn at its origin;
+    // nullopt along directions no sample can take (the ray's light, whatever lobe drew it).
+    std::optional<double> rayShare(const ParticipatingMedia& smoke, const PathState& state, const dvec3& dir) const;
+    // How many samples a point gets: as a source, by the angular size of the flames' box from it.
+    static int sampleCount(const ParticipatingMedia& smoke, const dvec3& point, double subdivision, double weight);
+
+private:
+    const ShadowRays& shadowRays_;
+};
+
+}  // namespace brume

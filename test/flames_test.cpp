@@ -1,0 +1,173 @@
+// Flames light the room: smoke with a temperature grid is a light source that next-event estimation samples
+// (integrator/flame_lights.h), at -ab 0 as at any -ab, against closed forms and numerical integrals of the
+// black body's light through the flame. The flame is a cube of even smoke [0, 1.99]³ (voxels of 1 cm, the
+// density ramping to 0 within a voxel outside), which emits and absorbs as a cube [−0.005, 1.995]³ would: the
+// references use that cube. Values per band against Brume's own black body (FlamesGlowAsBlackBodies checks it
+// against Planck's law); sensors and views in a scene with nothing else, so that every value is the flame's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "closed_forms.h"
+#include "integrator/testing.h"
+#include "medium/testing.h"
+#include "ray_path_dir.h"
+#include "scene_text.h"
+#include "spectrum/blackbody.h"
+
+namespace brume {
+namespace {
+
+using integrator_testing::Mean;
+using namespace medium::testing;
+
+constexpr double kKelvin = 1500;
+const Bounds3 kCube{dvec3(-0.005), dvec3(1.995)};
+
+// The flame's grids in flame.vdb: density 1, and kKelvin wherever there is smoke (its ramp included).
+void writeFlame(const RayPathDir& dir) {
+    auto density = boxGrid({0, 0, 0}, {199, 199, 199}, 1.0f, 0.01);
+    auto temperature = boxGrid({-2, -2, -2}, {201, 201, 201}, float(kKelvin), 0.01);
+    density->setName("density"), temperature->setName("temperature");
+    openvdb::io::File((dir.path() / "flame.vdb").string()).write({density, temperature});
+}
+
+// The flame as a smoke of extinction k per unit density and albedo 0, then `extra` scene text.
+std::string flameScene(double k, const std::string& extra = "") {
+    std::string ks = std::to_string(k);
+    return "void smoke f 2 temperature=temperature flame.vdb 0 3 " + ks + " " + ks + " " + ks + "\n" + extra;
+}
+
+// The length of the line from p along unit dir inside the cube.
+double chord(const dvec3& p, const dvec3& dir) {
+    double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+    return clipToBox(kCube, p, dir, t0, t1) ? t1 - t0 : 0;
+}
+
+// The mean of `runs` irradiance estimates at p facing n, in band c, with its standard error.
+Mean irradiance(const Integrator& integrator, const dvec3& p, const dvec3& n, int runs, int c = 0) {
+    Mean m;
+    for (int i = 0; i < runs; ++i) m.add(test::irradiance(integrator, p, n, uint64_t(i)).value[c]);
+    return m;
+}
+
+// Optically thick (τ = 1000 across): the face the sensor sees radiates as a black body, so E = π B F, F the
+// configuration factor of the 2 × 2 m face 1.5 m away (the sensor on its axis: four corner factors). 1.5%:
+// the face's edges are where the ramping density gets thick, within 4 mm of the reference cube's (0.4% of F),
+// and four standard errors of the mean (measured 0.3%).
+TEST(Flames, ThickFlameFaceOnRadiatesAsABlackBody) {
+    RayPathDir dir;
+    writeFlame(dir);
+    test::TestScene t(flameScene(500));
+    Integrator integrator(t.render, test::fixedSeed());
+    const dvec3 sensor(0.995, -1.5, 0.995);
+    double factor = 4 * test::cornerFormFactor(1, 1, 1.495);
+    Spectrum b = blackbody(kKelvin);
+    for (int c = 0; c < 3; ++c) {
+        Mean e = irradiance(integrator, sensor, dvec3(0, 1, 0), 40, c);
+        double expected = std::numbers::pi * b[c] * factor;
+        EXPECT_NEAR(e.value(), expected, 0.011 * expected + 4 * e.standardError()) << "band " << c;
+    }
+}
+
+// Optically thin (τ = 0.1 across), seen from below and aside: E = ∫ σ B cos θ e^{−σℓ} / d² dV over the cube (ℓ
+// its chord toward the sensor), by the midpoint rule on 60³ points (0.1%). At -ab 0 and -ab 2: rays drawn from
+// the sensor's Lambertian lobe leave the flame's light to next-event estimation, so the black room adds
+// nothing. 1% and four standard errors.
+TEST(Flames, ThinFlameMatchesAVolumeIntegral) {
+    RayPathDir dir;
+    writeFlame(dir);
+    const double sigma = 0.05;
+    test::TestScene t(flameScene(sigma));
+    const dvec3 sensor(-1.2, -1.0, 0.4), normal = glm::normalize(dvec3(1, 1.2, 0.3));
+    const int n = 60;
+    const double h = 2.0 / n;
+    double integral = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                dvec3 x = kCube.lo + h * dvec3(i + 0.5, j + 0.5, k + 0.5), toward = sensor - x;
+                double d = glm::length(toward), cosine = glm::dot(normal, -toward / d);
+                if (cosine > 0) integral += sigma * cosine * std::exp(-sigma * chord(x, toward / d)) / (d * d);
+            }
+    integral *= h * h * h;
+    Spectrum b = blackbody(kKelvin);
+    for (int bounces : {0, 2}) {
+        RenderSettings s = test::fixedSeed();
+        s.ambientBounces = bounces;
+        s.ambientAccuracy = 0;
+        s.ambientDivisions = 512;  // enough rays through the flame to see it counted twice
+        Integrator integrator(t.render, s);
+        Mean e = irradiance(integrator, sensor, normal, 100);
+        double expected = b[0] * integral;
+        EXPECT_NEAR(e.value(), expected, 0.01 * expected + 4 * e.standardError()) << "-ab " << bounces;
+    }
+}
+
+// A wall between the flame and the sensor: no light at all, not a little noise.
+TEST(Flames, AFlameBehindAWallLightsNothingThere) {
+    RayPathDir dir;
+    writeFlame(dir);
+    test::TestScene t(flameScene(0.05, "void plastic white 0 0 5 .8 .8 .8 0 0\n"
+                                       "white polygon wall 0 0 12  -3 -.5 -3  -3 -.5 5  5 -.5 5  5 -.5 -3\n"));
+    Integrator integrator(t.render, test::fixedSeed());
+    for (int i = 0; i < 20; ++i)
+        EXPECT_EQ(test::irradiance(integrator, dvec3(1, -1, 1), dvec3(0, 1, 0), uint64_t(i)).value[0], 0) << i;
+    EXPECT_GT(test::irradiance(integrator, dvec3(1, -0.4, 1), dvec3(0, 1, 0), 0).value[0], 0);
+}
+
+// A rough metal facing the flame, seen at 45°: its radiance is ∫ f cos θ L dω, L = B (1 − e^{−σℓ}) along each
+// direction, whatever share next-event estimation and the rays drawn from its glossy lobe each take of it
+// (power heuristic). Against the integral over the hemisphere (midpoint rule, 400 × 800 cells) of the lobes
+// the material gives the hit: 1.5% and four standard errors.
+TEST(Flames, GlossyReflectionSharesTheFlameBetweenSamplesAndRays) {
+    RayPathDir dir;
+    writeFlame(dir);
+    const double sigma = 0.3;
+    test::TestScene t(flameScene(sigma, "void metal m 0 0 5 .8 .8 .8 .9 .15\n"
+                                        "m polygon panel 0 0 12  -2 -1.5 -2  -2 -1.5 4  4 -1.5 4  4 -1.5 -2\n"));
+    Integrator integrator(t.render, test::fixedSeed());
+    const dvec3 eye(-0.5, -0.5, 1), point(0.5, -1.5, 1), view = glm::normalize(point - eye), up(0, 1, 0);
+    int material = -1;
+    for (size_t i = 0; i < t.scene.objects.size(); ++i)
+        if (t.scene.objects[i].name == "m") material = int(i);
+    Shading sh = integrator_testing::flatHit(point, up, view);
+    Lobes lobes;
+    ASSERT_TRUE(t.render.material(material)->scatter(sh, lobes));
+    Scatterer metal(sh, lobes);
+    Spectrum b = blackbody(kKelvin);
+    double expected = b[0] * integrator_testing::overDirections(
+                                 [&](const dvec3& l) {
+                                     return metal.response(l, 0)[0] * -std::expm1(-sigma * chord(point, l));
+                                 },
+                                 up, 400);
+    Mean v;
+    for (int i = 0; i < 400; ++i) v.add(test::trace(integrator, eye, view, uint64_t(i)).value[0]);
+    EXPECT_NEAR(v.value(), expected, 0.015 * expected + 4 * v.standardError());
+}
+
+// Fog (albedo .9, g .6, τ = 0.02 across) above the flame, seen against nothing: the flame's light it scatters
+// toward the eye, at -ab 0 by next-event estimation alone, at -ab 1 shared by the power heuristic with rays drawn
+// from the phase function, which add the fog's second scattering too (about τ/2 of the first, 1%): the two agree
+// within 1.5% and four standard errors of their difference.
+TEST(Flames, PhaseFunctionRaysShareTheFlameWithSamples) {
+    RayPathDir dir;
+    writeFlame(dir);
+    writeGrid(dir.path() / "fog.vdb", boxGrid({250, 200, 0}, {449, 319, 199}, 1.0f, 0.01));
+    test::TestScene t(flameScene(1, "void smoke fog 1 fog.vdb 0 7 .01 .01 .01 .9 .9 .9 .6\n"));
+    const dvec3 eye(6, 2.6, 1), view(-1, 0, 0);
+    Mean by[2];
+    for (int bounces : {0, 1}) {
+        RenderSettings s = test::fixedSeed();
+        s.ambientBounces = bounces;
+        Integrator integrator(t.render, s);
+        for (int i = 0; i < 400; ++i) by[bounces].add(test::trace(integrator, eye, view, uint64_t(i)).value[0]);
+    }
+    double se = std::hypot(by[0].standardError(), by[1].standardError());
+    EXPECT_GT(by[0].value(), 0);
+    EXPECT_NEAR(by[1].value(), by[0].value(), 0.015 * by[0].value() + 4 * se);
+}
+
+}  // namespace
+}  // namespace brume
