@@ -105,6 +105,29 @@ TEST(Flames, ThinFlameMatchesAVolumeIntegral) {
     }
 }
 
+// Whatever its density profile, a flame of one temperature and albedo 0 seen from inside sends B (1 − e^{−τ})
+// along a ray: here a ramp ρ = x (its cells bound it loosely, so the guard of uniform points is drawn too),
+// looked along from x = 1 to its end at 9.9 (and half a voxel of ramp beyond): τ = K ((9.9² − 1)/2 + 0.05·9.9).
+// Thin (τ 0.2) and thick (τ 4.9): the mean of 400 rays within 0.3% and four standard errors.
+TEST(Flames, UnevenFlameSeenFromInsideIsABlackBodyOfItsDepth) {
+    RayPathDir dir;
+    auto ramp = boxGrid({0, 0, 0}, {99, 99, 99}, 0.0f, 0.1);
+    ramp->tree().voxelizeActiveTiles();
+    for (auto it = ramp->tree().beginValueOn(); it; ++it) it.setValue(0.1f * it.getCoord().x());
+    auto temperature = boxGrid({-2, -2, -2}, {101, 101, 101}, float(kKelvin), 0.1);
+    ramp->setName("density"), temperature->setName("temperature");
+    openvdb::io::File((dir.path() / "flame.vdb").string()).write({ramp, temperature});
+    Spectrum b = blackbody(kKelvin);
+    for (double k : {0.004, 0.1}) {
+        test::TestScene t(flameScene(k));
+        Integrator integrator(t.render, test::fixedSeed());
+        Mean v;
+        for (int i = 0; i < 400; ++i) v.add(test::trace(integrator, dvec3(1, 5, 5), dvec3(1, 0, 0), uint64_t(i)).value[0]);
+        double expected = b[0] * -std::expm1(-k * ((9.9 * 9.9 - 1) / 2 + 0.05 * 9.9));
+        EXPECT_NEAR(v.value(), expected, 0.003 * expected + 4 * v.standardError()) << "K " << k;
+    }
+}
+
 // A wall between the flame and the sensor: no light at all, not a little noise.
 TEST(Flames, AFlameBehindAWallLightsNothingThere) {
     RayPathDir dir;

@@ -8,13 +8,14 @@ namespace brume {
 
 using namespace integrator_detail;
 
-// One sample per ratio of the box's angular size on each axis: each sample's shadow ray is already an
-// estimate along the whole direction, not of one point.
+// One sample per ratio of the box's angular size on each axis, at most kMaxSamples: each sample is already an
+// estimate along a whole direction, at several points, and costs as much as many shadow rays.
 int FlameLights::sampleCount(const ParticipatingMedia& smoke, const dvec3& point, double subdivision, double weight) {
+    constexpr int kMaxSamples = 16;
     const Bounds3& box = smoke.flameBox();
     double size = glm::length(box.hi - box.lo);
     double angularSize = size / std::max(glm::length(0.5 * (box.lo + box.hi) - point), 0.5 * size);
-    return subdividedSampleCount(angularSize, 1, subdivision, weight);
+    return std::min(kMaxSamples, subdividedSampleCount(angularSize, 1, subdivision, weight));
 }
 
 Spectrum FlameLights::sample(const Scatterer& at, const SurfaceId& surface, const PathState& state,
@@ -24,6 +25,8 @@ Spectrum FlameLights::sample(const Scatterer& at, const SurfaceId& surface, cons
     if (!smoke.hasFlames()) return sum;
     const dvec3& p = at.point();
     int n = sampleCount(smoke, p, subdivision, state.weight);
+    // Deeper in a path many paths average: fewer points along each direction.
+    int points = state.depth == 0 ? 8 : 2;
     uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
     for (int k = 0; k < n; ++k) {
         double u0, u1;
@@ -40,7 +43,7 @@ Spectrum FlameLights::sample(const Scatterer& at, const SurfaceId& surface, cons
         // Along the direction, through the flames' box.
         double t0 = 0, t1 = std::numeric_limits<double>::infinity();
         if (!clipToBox(smoke.flameBox(), p, dir, t0, t1)) continue;
-        Spectrum le = shadowRays_.flameLightAlong(Ray{p, dir, t1, surface}, state, ctx);
+        Spectrum le = shadowRays_.flameLightAlong(Ray{p, dir, t1, surface}, points, state, ctx);
         if (!le.isBlack()) sum.addProduct(f, le, float(1 / (density * n)));
     }
     return sum;

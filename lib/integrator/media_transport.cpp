@@ -95,9 +95,12 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
         if (!phase.empty()) value += scattered(point, ray.dir, phase, state, ctx);
         return value;
     }
-    Spectrum t = media_.transmittance(ray, start, end, h, smoke, ctx.rng);
-    Spectrum value = t.isBlack() ? t : behind(t);
-    if (scatters || emits) value += inScattered(ray, start, end, h, state, ctx);
+    // Flames' light along the ray at points of their own, the transmittance to what lies behind with it.
+    Spectrum t, value(0.f);
+    if (emits) value = smoke.emittedAlong(ray, start, end, h, ctx.rng, t);
+    else t = media_.transmittance(ray, start, end, h, smoke, ctx.rng);
+    if (!t.isBlack()) value += behind(t);
+    if (scatters) value += inScattered(ray, start, end, h, state, ctx);
     return value;
 }
 
@@ -108,7 +111,7 @@ int MediaTransport::inScatteringSamples(double length) const {
     return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
 }
 
-// ∫ T(t) (σ_s(t) L_s(t) + σ_a(t) B(t)) dt over [start, end] (scattered light, and flames' emission), at points
+// ∫ T(t) σ_s(t) L_s(t) dt over [start, end] (the light scattered toward the ray's origin), at points
 // drawn by a mixture of strategies, weighed by the mixture's density (MIS with the balance heuristic), and
 // stratified over the whole mixture (DistanceMixture): forced into the medium (ForcedCollision) by the majorant
 // of the largest band, and of the clearest one (clear bands see far, dense ones near, and T_λ σ_s / density
@@ -133,10 +136,9 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
                                                     return a.t0 == b.t0 && a.t1 == b.t1 && a.majorant == b.majorant;
                                                 });
     double loose = looseLength(dense);
-    std::vector<SourceDistance> sources;
-    if (smoke.scatters(h))
-        sources = sourceDistances(scene_.lights(), ray, dense, HenyeyGreenstein(smoke.asymmetry(ray, start, end, h)),
-                                  ctx.scratch.sourceGuesses);
+    std::vector<SourceDistance> sources =
+        sourceDistances(scene_.lights(), ray, dense, HenyeyGreenstein(smoke.asymmetry(ray, start, end, h)),
+                        ctx.scratch.sourceGuesses);
     double toward = sources.empty() ? 0 : 0.9;
     double uniform = std::isfinite(even.length()) ? (1 - toward) * 0.5 * loose / even.length() : 0;  // none out to infinity
     double forced = 1 - toward - uniform;
@@ -157,7 +159,6 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
         if (tr.isBlack()) continue;
         dvec3 point = ray.org + t * ray.dir;
         Spectrum weight = tr * float(1 / (density * n));
-        if (smoke.emits()) sum += smoke.emission(point) * weight;
         PhaseMixture phase;
         smoke.scattering(point, h, weight, phase);
         if (!phase.empty()) sum += scattered(point, ray.dir, phase, state, ctx);

@@ -1,8 +1,9 @@
 // Light along rays through participating media: attenuation, and light scattered toward the ray by the
 // media it crosses, by null-collision tracking through the homogeneous medium and the smoke together.
 // Rays whose value is the answer (primary rays and their specular children) see what lies behind the
-// medium weighted by its transmittance and in-scattering at points forced into the medium; rays averaged
-// with many others (diffuse and sampled ones) take delta tracking's first collision or the surface behind.
+// medium weighted by its transmittance, flames' light summed along them (ParticipatingMedia::emittedAlong)
+// and in-scattering at points forced into the medium; rays averaged with many others (diffuse and sampled
+// ones) take delta tracking's first collision or the surface behind.
 #pragma once
 #include "integrator/light_sampler.h"
 #include "integrator/media.h"

@@ -12,12 +12,12 @@ Spectrum ShadowRays::toSurface(Ray ray, const SurfaceId& target, bool toInfinity
                 });
 }
 
-Spectrum ShadowRays::flameLightAlong(const Ray& ray, PathState state, PathContext& ctx) const {
+Spectrum ShadowRays::flameLightAlong(const Ray& ray, int points, PathState state, PathContext& ctx) const {
     Spectrum sum(0.f);
     walk(ray, SurfaceId{}, false, Emitter::Kind::Light, state, ctx, nullptr,
          [&](const Ray& stretch, double end, const HomogeneousMedium& h, const Spectrum& before) {
              Spectrum t;
-             sum += before * ctx.smoke.emittedAlong(stretch, 0, end, h, ctx.rng, t);
+             sum += before * ctx.smoke.emittedAlong(stretch, 0, end, h, ctx.rng, t, points);
              return t;
          });
     return sum;

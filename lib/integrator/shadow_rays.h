@@ -23,8 +23,9 @@ public:
     Spectrum toSurface(Ray ray, const SurfaceId& target, bool toInfinity, Emitter::Kind targetKind, PathState& state,
                        PathContext& ctx, SurfaceHit* reached) const;
     // The light flames emit toward ray.org along it, up to ray.tmax or what stops shadow rays first: ∫ T σ_a B dt,
-    // T the transmission of what lies between (ParticipatingMedia::emittedAlong in each stretch of media).
-    Spectrum flameLightAlong(const Ray& ray, PathState state, PathContext& ctx) const;
+    // T the transmission of what lies between (ParticipatingMedia::emittedAlong at `points` points in each
+    // stretch of media).
+    Spectrum flameLightAlong(const Ray& ray, int points, PathState state, PathContext& ctx) const;
 
 private:
     // The walk both take: surfaces crossed, passed or stopping it; `stretch(ray, end, h, t)` gives the media's

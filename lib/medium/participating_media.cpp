@@ -1,6 +1,9 @@
 #include "medium/participating_media.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "medium/forced_collision.h"
 
 namespace brume {
 
@@ -71,40 +74,32 @@ double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3&
 }
 
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
-                                          Random& random, Spectrum& transmittance) const {
+                                          Random& random, Spectrum& transmittance, int points) const {
     auto stretch = [&](double t0, double t1) {
         Spectrum t = h.transmittance(t1 - t0);
         return t.isBlack() ? t : t * smokeTransmittance(ray, t0, t1, random);
     };
     std::vector<MajorantSegment> segments;
     majorants(ray, start, end, &h, segments);
-    double depth = 0;
-    for (const MajorantSegment& s : segments) depth += s.majorant * (s.t1 - s.t0);
+    ForcedCollision forced(segments);
     Spectrum sum(0.f);
-    if (!(depth > 0)) {
+    if (segments.empty() || !(forced.reach() > 0)) {
         transmittance = stretch(start, end);
         return sum;
     }
-    const double step = std::min(kStep, depth / kMinPoints);
+    UniformCollision even(segments);
+    double uniform = std::isfinite(even.length()) ? 0.5 * looseLength(segments) / even.length() : 0;
+    DistanceMixture mixture(segments.front().t0, segments.back().t1);
+    mixture.add(uniform, &even);
+    mixture.add(1 - uniform, &forced);
     Spectrum t(1.f);
-    double at = start, before = 0;  // the last point, and τ̄ up to the start of the current segment
-    size_t i = 0;
-    for (double tau = random.uniform() * step; tau < depth && !t.isBlack(); tau += step) {
-        for (double d; i + 1 < segments.size() && before + (d = segments[i].majorant * (segments[i].t1 - segments[i].t0)) <= tau;)
-            before += d, ++i;
-        const MajorantSegment& s = segments[i];
-        double next = std::min(s.t1, s.t0 + (tau - before) / s.majorant);
+    double at = start, u = random.uniform();
+    for (int k = 0; k < points && !t.isBlack(); ++k) {
+        double next = mixture.sample((k + u) / points, at);  // in order: each searched for from the last
+        double density = mixture.density(next);
         t *= stretch(at, next);
         at = next;
-        sum.addProduct(t, emission(ray.at(next)), float(step / s.majorant));
-        // Roulette once T is below 1% in every band: survivors carry T up.
-        if (double most = t.maxValue(); most < 0.01) {
-            if (random.uniform() * 0.01 >= most) {
-                transmittance = Spectrum(0.f);
-                return sum;
-            }
-            t *= float(0.01 / most);
-        }
+        if (density > 0) sum.addProduct(t, emission(ray.at(next)), float(1 / (density * points)));
     }
     transmittance = t.isBlack() ? t : t * stretch(at, end);
     return sum;

@@ -33,13 +33,13 @@ public:
     double flameDirectionDensity(const dvec3& from, const dvec3& dir) const;
     const Bounds3& flameBox() const { return flameBox_; }
     // The light the flames emit toward ray.org along [start, end], ∫ T σ_a B dt with T from `start` through
-    // `h` and the smoke, and in `transmittance` T over the whole stretch; both unbiased. T ε/σ̄ is summed at
-    // points a jittered, even step of the majorant's optical depth τ̄ apart (a jittered grid integrates exactly
-    // in expectation), T carried from point to point by the smoke's own estimate: a thick flame's light comes
-    // from its first few steps, whatever its cells' bounds (roulette ends the walk once T is small), and a thin
-    // one gets at least kMinPoints points.
+    // `h` and the smoke, and in `transmittance` T over the whole stretch; both unbiased. `points` distances
+    // stratified over the majorant's forced collisions (ForcedCollision: exact for even smoke, where T is the
+    // majorant's own exponential, however thick), with a uniform guard where the smoke's cells bound it
+    // loosely, T carried from point to point by the smoke's own estimate: a thick flame's light comes from its
+    // near side, a thin one's from all along.
     Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
-                          Spectrum& transmittance) const;
+                          Spectrum& transmittance, int points = 8) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
     bool scatters(const HomogeneousMedium& h) const;
     // The Henyey–Greenstein g of what scatters along [start, end], to guide sampling: the mean g of the
@@ -62,9 +62,6 @@ public:
     void scattering(const dvec3& p, const HomogeneousMedium& h, const Spectrum& scale, PhaseMixture& out) const;
 
 private:
-    static constexpr int kMinPoints = 8;
-    static constexpr double kStep = 0.25;  // of τ̄ at most, between points
-
     struct Flame {
         size_t volume;  // in smoke_ (an index: the media may be moved or copied)
         double share;   // of the draws
