@@ -11,7 +11,6 @@
 #pragma once
 #include <optional>
 
-#include "integrator/media.h"
 #include "integrator/path_context.h"
 #include "integrator/scatterer.h"
 #include "integrator/shadow_rays.h"

@@ -34,7 +34,7 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       patches_(scene, shading_, shadowRays_, lights_, settings_.skyPortals),
       cache_(cache, settings_, *this, shading_, media_, portals_, patches_, seeds_),
       surfaces_(scene, settings_, lights_, portals_, patches_, cache_, *this, roulette_),
-      mediaTransport_(scene, settings_, media_, lights_, *this, roulette_) {
+      mediaTransport_(scene, settings_, lights_, *this, roulette_) {
     const Bounds3& extent = scene.geometry().extent();
     epsilon_ = 1e-7 * (extent.empty() ? 1.0 : glm::length(extent.hi - extent.lo));
     media_.prepare(settings.time.value_or(0));

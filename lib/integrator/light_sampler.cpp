@@ -55,9 +55,7 @@ double LightSampler::misWeight(const Light& light, const PathState& state, const
 // also sampled by rays share it with them by the power heuristic.
 Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,
                                 PathContext& ctx, const SourceShares* shares) const {
-    Spectrum value = sourcesLd(at, surface, state, ctx, shares);
-    if (ctx.smoke.hasFlames()) value += flames_.sample(at, surface, state, subdivision(state), ctx);
-    return value;
+    return sourcesLd(at, surface, state, ctx, shares) + flames_.sample(at, surface, state, subdivision(state), ctx);
 }
 
 Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,

@@ -39,19 +39,13 @@ HomogeneousMedium Media::homogeneousAlong(const Ray& ray, const SurfaceHit* hit,
     return h;
 }
 
-Spectrum Media::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
-                              const ParticipatingMedia& smoke, Random& rng) const {
-    Spectrum t = h.transmittance(end - start);
-    return t.isBlack() || !smoke.hasSmoke() ? t : t * smoke.smokeTransmittance(ray, start, end, rng);
-}
-
 bool Media::attenuates(const Ray& ray, double distance, const PathState& state, const ParticipatingMedia& smoke) const {
     return present_ && (!homogeneousAlong(ray, nullptr, state).clear() || smoke.smokeAlong(ray, 0, distance));
 }
 
 Spectrum Media::clearTransmittance(const Ray& ray, double distance, const PathState& state,
                                    const ParticipatingMedia& smoke, Random& rng) const {
-    return transmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state), smoke, rng);
+    return smoke.transmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state), rng);
 }
 
 }  // namespace brume

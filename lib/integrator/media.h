@@ -32,10 +32,6 @@ public:
     // inside it (the eye or sensor in the mist): the mist fills the ray's way to that boundary, as Radiance
     // rules for mists with a source list.
     HomogeneousMedium homogeneousAlong(const Ray& ray, const SurfaceHit* hit, const PathState& state) const;
-    // exp(−∫σ_t) between start and end: in closed form for the homogeneous medium, by residual ratio
-    // tracking in the smoke.
-    Spectrum transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
-                           const ParticipatingMedia& smoke, Random& rng) const;
     // Whether some medium lies on a shadow ray's way to `distance` (smoke far from it costs a box test).
     bool attenuates(const Ray& ray, double distance, const PathState& state, const ParticipatingMedia& smoke) const;
     // Along a shadow ray that meets no surface before `distance`.

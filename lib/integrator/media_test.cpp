@@ -29,7 +29,7 @@ constexpr double kLength = 7;
 double transmittance(Parts& parts, double time) {
     Random rng(1);
     HomogeneousMedium clear;
-    return parts.media.transmittance(kThrough, 0, kLength, clear, parts.media.smokeAt(time), rng)[0];
+    return parts.media.smokeAt(time).transmittance(kThrough, 0, kLength, clear, rng)[0];
 }
 
 RenderSettings at(double time) {

@@ -13,9 +13,9 @@ namespace brume {
 
 class MediaTransport {
 public:
-    MediaTransport(const RenderScene& scene, const RenderSettings& settings, const Media& media,
-                   const LightSampler& lights, const Tracer& tracer, const RussianRoulette& roulette)
-        : scene_(scene), settings_(settings), media_(media), lights_(lights), tracer_(tracer), roulette_(roulette) {}
+    MediaTransport(const RenderScene& scene, const RenderSettings& settings, const LightSampler& lights,
+                   const Tracer& tracer, const RussianRoulette& roulette)
+        : scene_(scene), settings_(settings), lights_(lights), tracer_(tracer), roulette_(roulette) {}
 
     // The radiance along a ray that crosses media (`h` the homogeneous one along it) to `hit`, or past every
     // surface: what lies behind them as they let it through, and what they scatter and emit toward the ray.
@@ -31,7 +31,6 @@ private:
 
     const RenderScene& scene_;
     const RenderSettings& settings_;
-    const Media& media_;
     const LightSampler& lights_;
     const Tracer& tracer_;
     const RussianRoulette& roulette_;

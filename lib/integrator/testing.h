@@ -71,7 +71,7 @@ struct Parts {
           patches(scene.render, shading, shadowRays, lights, settings.skyPortals),
           cache(surfaceCache, settings, tracer, shading, media, portals, patches, Seeds{s.seed}),
           surfaces(scene.render, settings, lights, portals, patches, cache, tracer, roulette),
-          transport(scene.render, settings, media, lights, tracer, roulette),
+          transport(scene.render, settings, lights, tracer, roulette),
           scratch(scene.render) {
         media.prepare(instant());
     }

@@ -75,10 +75,7 @@ double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3&
 
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                           Random& random, Spectrum& transmittance, int points) const {
-    auto stretch = [&](double t0, double t1) {
-        Spectrum t = h.transmittance(t1 - t0);
-        return t.isBlack() ? t : t * smokeTransmittance(ray, t0, t1, random);
-    };
+    auto stretch = [&](double t0, double t1) { return ParticipatingMedia::transmittance(ray, t0, t1, h, random); };
     std::vector<MajorantSegment> segments;
     majorants(ray, start, end, &h, segments);
     ForcedCollision forced(segments);
@@ -103,6 +100,12 @@ Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double e
     }
     transmittance = t.isBlack() ? t : t * stretch(at, end);
     return sum;
+}
+
+Spectrum ParticipatingMedia::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                                           Random& random) const {
+    Spectrum t = h.transmittance(end - start);
+    return t.isBlack() || !hasSmoke() ? t : t * smokeTransmittance(ray, start, end, random);
 }
 
 bool ParticipatingMedia::smokeAlong(const Ray& ray, double start, double end) const {

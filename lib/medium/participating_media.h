@@ -56,6 +56,8 @@ public:
                    std::vector<MajorantSegment>& out, Band band = Band::Largest) const;
     // exp(−∫σ_t) of the smoke between start and end (an unbiased estimate).
     Spectrum smokeTransmittance(const Ray& ray, double start, double end, Random& random) const;
+    // The same through `h` and the smoke: in closed form for `h`, by residual ratio tracking in the smoke.
+    Spectrum transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random) const;
     // σ_t of the smoke at p.
     Spectrum smokeExtinction(const dvec3& p) const;
     // The scattering at p: each medium's σ_s times `scale`, with its phase function.

@@ -57,11 +57,6 @@ std::shared_ptr<const GridSequence> readFrames(const SceneObject& o, std::span<c
     }
 }
 
-// Raises the residual's majorants for ratio tracking: its estimate's relative variance is e^{∫ r²/σ̄ dt} − 1 for
-// residual r ≤ σ̄, at most e^{D/m} − 1 with the majorants times m, D their optical depth, for m·D tentative
-// collisions on average. m makes D/m at most 0.02 (a standard deviation of 14%) but the collisions at most 32:
-// each costs one density lookup, far less than the shadow rays and samples whose noise it removes
-// (bench/smoke.py: 2 to 27 times less time for a given error than m = 1).
 // Cells twice a voxel wide over where both the density and the temperature may be non-zero, weighed by the
 // brightness of what the smoke emits.
 EmissionCells flameCells(const SmokeVolume& smoke, const SmokeDescription& d) {
@@ -72,6 +67,11 @@ EmissionCells flameCells(const SmokeVolume& smoke, const SmokeDescription& d) {
     return EmissionCells(box, 2 * voxel, [&](const dvec3& p) { return double(brightness(smoke.emission(p))); });
 }
 
+// Raises the residual's majorants for ratio tracking: its estimate's relative variance is e^{∫ r²/σ̄ dt} − 1 for
+// residual r ≤ σ̄, at most e^{D/m} − 1 with the majorants times m, D their optical depth, for m·D tentative
+// collisions on average. m makes D/m at most 0.02 (a standard deviation of 14%) but the collisions at most 32:
+// each costs one density lookup, far less than the shadow rays and samples whose noise it removes
+// (bench/smoke.py: 2 to 27 times less time for a given error than m = 1).
 void boostResidual(std::vector<MajorantSegment>& residual) {
     constexpr double kVariance = 0.02, kCollisions = 32;
     double depth = 0;
@@ -121,9 +121,10 @@ SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsP
       // half an ulp, and the majorant must still bound it.
       scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)),
       scaleDown_(smoke.extinctionPerDensity.maxValue() * (1 - 0x1p-23)) {
-    if (emits())
+    if (emits()) {
         for (double kelvin = 0; kelvin <= kHottest; kelvin += kBlackbodyStep) blackbodies_.push_back(blackbody(kelvin));
-    if (emits()) flames_ = flameCells(*this, description_);
+        flames_ = flameCells(*this, description_);
+    }
 }
 
 double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
