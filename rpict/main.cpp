@@ -129,6 +129,8 @@ private:
         RenderedPicture r = sequence_.render(f, p, &progress_);
         if (sequence_.cache() && o_.reportInterval > 0)
             std::fprintf(stderr, "rpict: irradiance cache: %s\n", sequence_.cache()->summary().c_str());
+        if (sequence_.volumes() && sequence_.volumes()->size() > 0 && o_.reportInterval > 0)
+            std::fprintf(stderr, "rpict: volume cache: %s\n", sequence_.volumes()->summary().c_str());
         bool laterFrame = picturePath.empty() && framesOnOutput_++ > 0;
         r.picture.header = headerFor(scene_, command_, f, p, laterFrame);
         if (picturePath.empty()) writeRadiancePicture(std::cout, r.picture, laterFrame);

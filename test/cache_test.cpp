@@ -38,17 +38,6 @@ RenderSettings cached(int bounces, double accuracy = 0.1) {
     return s;
 }
 
-// Inside a closed sphere of reflectance ρ with a small central lamp, every wall point receives
-// E = E₀/(1 − ρ) over all bounces (E₀ = Φ/(4πR²) directly).
-std::string integratingSphere(double rho) {
-    std::ostringstream s;
-    s << "void plastic wall 0 0 5 " << rho << " " << rho << " " << rho << " 0 0\n"
-      << "wall bubble inside 0 0 4 0 0 0 1\n"
-      << "void light lamp 0 0 3 1000 1000 1000\n"
-      << "lamp sphere bulb 0 0 4 0 0 0 0.02\n";
-    return s.str();
-}
-
 std::vector<Sensor> onTheSphere(int n) {
     std::vector<Sensor> sensors;
     for (int i = 0; i < n; ++i) {  // a Fibonacci spiral over the wall, facing the centre

@@ -21,6 +21,17 @@ inline Scene sceneFromText(const std::string& text) {
     return scene;
 }
 
+// Inside a closed sphere of radius 1 and reflectance ρ with a small central lamp (Φ = 4π² r² L), every wall
+// point receives E = E₀/(1 − ρ) over all bounces (E₀ = Φ/(4πR²) directly).
+inline std::string integratingSphere(double rho) {
+    std::ostringstream s;
+    s << "void plastic wall 0 0 5 " << rho << " " << rho << " " << rho << " 0 0\n"
+      << "wall bubble inside 0 0 4 0 0 0 1\n"
+      << "void light lamp 0 0 3 1000 1000 1000\n"
+      << "lamp sphere bulb 0 0 4 0 0 0 0.02\n";
+    return s.str();
+}
+
 // A scene ready to trace; holds the parsed scene so the compiled one can refer to it.
 struct TestScene {
     Scene scene;

@@ -2,7 +2,7 @@
 // and the records added since it was built one by one), interpolated by their weights; the misses of
 // lookups counted in regions until they pay for a record; new records reconciled with the older ones.
 //
-// `Kind` (SurfaceZones) says how a record speaks for its neighbours: weigh(record, receiver, value*),
+// `Kind` (SurfaceZones, VolumeZones) says how a record speaks for its neighbours: weigh(record, receiver, value*),
 // box(record, origin), reach(record), facing(receiver), size(record), sizeBeforeRecords(), reconcile(fresh,
 // older); and its Record type, with `point`, `level` and `values`.
 #pragma once
@@ -40,19 +40,26 @@ public:
     // The value at the receiver, interpolated between the records of its bounce or shallower ones whose
     // zones hold it; false where there are none.
     bool lookup(const Receiver& at, Spectrum& value) const {
-        double total = 0;
         Spectrum sum(0.f), one(0.f);
-        forEachHolding(at.point, [&](size_t i) {
-            const Record& r = records_[i];
-            if (r.level > at.level) return;
-            double w = kind_.weigh(r, at, &one);
-            if (w <= 0) return;
-            sum += one * float(w);
-            total += w;
-        });
+        double total = gather(at, [&](const Record&, double w) { sum += one * float(w); }, &one);
         if (!(total > 0)) return false;
         value = sum * float(1 / total);
         return true;
+    }
+    // Calls f(record, weight) for each record of the receiver's bounce or shallower whose zone holds it (weight
+    // > 0), its value at the receiver (Kind::weigh's) in `value` first if given; returns the weights' sum.
+    template <class F>
+    double gather(const Receiver& at, F&& f, Spectrum* value = nullptr) const {
+        double total = 0;
+        forEachHolding(at.point, [&](size_t i) {
+            const Record& r = records_[i];
+            if (r.level > at.level) return;
+            double w = kind_.weigh(r, at, value);
+            if (!(w > 0)) return;
+            f(r, w);
+            total += w;
+        });
+        return total;
     }
 
     // Counts a miss of request q in its region: the region's key once as many misses as its first request

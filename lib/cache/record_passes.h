@@ -34,11 +34,12 @@ struct CacheVisit {
 
 // Makes the records `store` accepts of these requests (see RecordStore::accept; `missesToPay` tells what a
 // record is worth), kRecordsPerRound at a time on all threads: make(request, visit) computes one, noting in
-// `visit` (seeded by the request) what its own rays missed; those requests, of deeper bounces, are served
-// before the next round, so that later records use the records they bring.
-template <class Store, class Make>
+// `visit` (seeded by the request) what its own rays missed; those requests, of deeper bounces and of either
+// kind of record, go to serveDeeper before the next round, so that later records use the records they bring.
+template <class Store, class Make, class ServeDeeper>
 void makeRecords(Store& store, const std::vector<RecordRequest>& requests,
-                 const std::function<int(const RecordRequest&)>& missesToPay, const Make& make) {
+                 const std::function<int(const RecordRequest&)>& missesToPay, const Make& make,
+                 const ServeDeeper& serveDeeper) {
     constexpr size_t kRecordsPerRound = 64;  // made together; the next ones may use them
     std::vector<RecordRequest> accepted = store.accept(requests, missesToPay);
     for (size_t start = 0; start < accepted.size(); start += kRecordsPerRound) {
@@ -52,7 +53,7 @@ void makeRecords(Store& store, const std::vector<RecordRequest>& requests,
         store.insert(std::move(records));
         std::vector<RecordRequest> deeper;
         for (const CacheVisit& v : visits) deeper.insert(deeper.end(), v.requests.begin(), v.requests.end());
-        if (!deeper.empty()) makeRecords(store, deeper, missesToPay, make);
+        if (!deeper.empty()) serveDeeper(deeper);
     }
 }
 

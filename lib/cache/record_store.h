@@ -1,4 +1,4 @@
-// The records of one kind (surface records now; volume records next) at the instants in use, each instant's
+// The records of one kind (surface or volume records) at the instants in use, each instant's
 // in a RecordLayer of its own: where the scene changes in time (`timed`) a record holds the light of its own
 // instant only, and lookups, misses and splotch control never mix instants; where nothing changes, one layer
 // serves every instant.
@@ -34,6 +34,13 @@ public:
     bool lookup(const Receiver& at, Spectrum& value) const {
         const Layer* layer = layerAt(at.time);
         return layer && layer->lookup(at, value);
+    }
+    // Calls f(record, weight) for each record of the receiver's instant that holds it (RecordLayer::gather);
+    // the weights' sum, 0 where none does.
+    template <class F>
+    double gather(const Receiver& at, F&& f) const {
+        const Layer* layer = layerAt(at.time);
+        return layer ? layer->gather(at, f) : 0.0;
     }
 
     // The requests (taken in their order) that records should be made for now: the first of each region of

@@ -2,6 +2,8 @@
 
 #include "cache/hemisphere_samples.h"
 #include "cache/record_builder.h"
+#include "cache/sphere_samples.h"
+#include "cache/volume_record_builder.h"
 
 namespace brume {
 
@@ -15,18 +17,45 @@ bool CacheClient::irradiance(const Receiver& at, const SurfaceId& surface, doubl
     return true;
 }
 
-SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
-    RayOutputs outputs;
-    PathContext ctx{Random(seeds_.of(q.key), q.key), scratch, q.at.time, media_.smokeAt(q.at.time), &visit, &outputs};
-    const dvec3& point = q.at.point;
-    HemisphereSamples samples(point, *q.at.normal, recordDivisions(q), Spectrum::defaultChannels());
-    PathState child = shading_.startingAt(point, scratch);
+bool CacheClient::inScattered(const Receiver& at, const dvec3& dir, const PhaseMixture& phase, double pathWeight,
+                              PathContext& ctx, Spectrum& value) const {
+    if (!volumes_ || !ctx.visit) return false;
+    Spectrum sum(0.f);
+    double total = volumes_->gather(at, [&](const VolumeRecord& r, double w) {
+        sum += VolumeZones::scattered(r, at.point, dir, phase) * float(w);
+    });
+    if (total > 0) {
+        value = sum * float(1 / total);
+        return true;
+    }
+    float weight = float(std::min(1.0, pathWeight * std::min(1.0, double(phase.coefficient().maxValue()))));
+    if (!ctx.visit->miss(at, SurfaceId{}, weight)) return false;
+    value = Spectrum(0.f);
+    return true;
+}
+
+PathContext CacheClient::recordContext(const RecordRequest& q, Scratch& scratch, CacheVisit& visit,
+                                       RayOutputs& outputs) const {
+    return PathContext{Random(seeds_.of(q.key), q.key), scratch, q.at.time, media_.smokeAt(q.at.time), &visit, &outputs};
+}
+
+PathState CacheClient::recordRays(const RecordRequest& q, Scratch& scratch) const {
+    PathState child = shading_.startingAt(q.at.point, scratch);
     child.kind = PathState::Kind::Sampled;
     child.ambientLevel = q.at.level + 1;
     child.reflections = q.at.level + 1;
     child.weight = q.weight;
     child.fromWeight = q.weight;
     child.depth = 1;
+    return child;
+}
+
+SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+    RayOutputs outputs;
+    PathContext ctx = recordContext(q, scratch, visit, outputs);
+    const dvec3& point = q.at.point;
+    HemisphereSamples samples(point, *q.at.normal, recordDivisions(q), Spectrum::defaultChannels());
+    PathState child = recordRays(q, scratch);
     bool aims = portals_.active();
     aimingFrom(child, point, *q.at.normal, samples.count(), aims);
     for (int j = 0; j < samples.rows(); ++j) {
@@ -43,6 +72,27 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
         patches_.sample(point, *q.at.normal, q.leaving, samples.count(), child, ctx, &samples.aimed());
     }
     SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
+    record.time = q.at.time;
+    return record;
+}
+
+VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+    RayOutputs outputs;
+    PathContext ctx = recordContext(q, scratch, visit, outputs);
+    const dvec3& point = q.at.point;
+    SphereSamples samples(point, recordDivisions(q), Spectrum::defaultChannels());
+    PathState child = recordRays(q, scratch);
+    aimingFrom(child, point, dvec3(0), samples.count(), false);
+    for (int j = 0; j < samples.rows(); ++j) {
+        for (int k = 0; k < samples.columns(); ++k) {
+            dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());
+            RayRecord hit;
+            Spectrum l = tracer_.radiance(Ray{point, dir, std::numeric_limits<double>::infinity(), SurfaceId{}}, child,
+                                          ctx, nullptr, &hit);
+            samples.set(samples.cell(j, k), dir, l.clampFinite(), hit.firstLength);
+        }
+    }
+    VolumeRecord record = buildVolumeRecord(samples, volumes_->kind().shape(), q.at.level);
     record.time = q.at.time;
     return record;
 }

@@ -1,7 +1,9 @@
-// The irradiance cache as light transport uses it: lookups at diffuse shading points (noting the records they
-// miss), and the hemisphere of rays a record is made of.
+// The irradiance caches as light transport uses them: lookups at diffuse shading points and at scattering
+// points in media (noting the records they miss), and the rays a record is made of (a hemisphere's, a
+// sphere's).
 #pragma once
 #include "cache/surface_cache.h"
+#include "cache/volume_cache.h"
 #include "integrator/hit_shading.h"
 #include "integrator/media.h"
 #include "integrator/settings.h"
@@ -13,20 +15,28 @@ namespace brume {
 
 class CacheClient {
 public:
-    // `cache` may be null (no cache: -ab or -aa 0); `seeds` seed the records' rays by their requests' keys.
-    CacheClient(const SurfaceCache* cache, const RenderSettings& settings, const Tracer& tracer,
-                const HitShading& shading, const Media& media, const SkyPortals& portals, const SunPatches& patches,
-                Seeds seeds)
-        : cache_(cache), settings_(settings), tracer_(tracer), shading_(shading), media_(media), portals_(portals),
-          patches_(patches), seeds_(seeds) {}
+    // `cache` and `volumes` may be null (no cache: -ab or -aa 0); `seeds` seed the records' rays by their
+    // requests' keys.
+    CacheClient(const SurfaceCache* cache, const VolumeCache* volumes, const RenderSettings& settings,
+                const Tracer& tracer, const HitShading& shading, const Media& media, const SkyPortals& portals,
+                const SunPatches& patches, Seeds seeds)
+        : cache_(cache), volumes_(volumes), settings_(settings), tracer_(tracer), shading_(shading), media_(media),
+          portals_(portals), patches_(patches), seeds_(seeds) {}
 
     const SurfaceCache* cache() const { return cache_; }
+    const VolumeCache* volumes() const { return volumes_; }
     // The indirect irradiance at a diffuse shading point from the records (true). Where there is none, the
     // work item's visit asks for one (missed by a ray of the path's weight times the lobe's coefficient
     // `coef`) and the path samples the light itself (false) — unless the item waits for the record: then
     // true with 0, the item running again.
     bool irradiance(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
                     PathContext& ctx, Spectrum& value) const;
+
+    // The light a medium's `phase` at `at.point` scatters back along a ray of direction `dir` from everything
+    // but the sources next-event estimation samples, from the volume records (true); where there is none, as
+    // irradiance() (the path's weight times the phase's coefficient weighs the miss).
+    bool inScattered(const Receiver& at, const dvec3& dir, const PhaseMixture& phase, double pathWeight,
+                     PathContext& ctx, Spectrum& value) const;
 
     // Radiance's -ad at the first bounce, scaled down by the looking ray's weight deeper in a path (at least
     // kMinDivisions).
@@ -47,11 +57,19 @@ public:
     // and zone as equivalent point sources. Sources these rays meet are left out: records hold indirect
     // light, next-event estimation gives the direct. Their own misses go to `visit`.
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
+    // A volume record: the radiance of rays stratified over the sphere, each continuing one bounce deeper, the
+    // sources they meet left out as a surface record's rays leave them.
+    VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
 private:
     static constexpr int kMinDivisions = 16;
 
+    // The context and the first state of a record's rays, one bounce deeper than the request.
+    PathContext recordContext(const RecordRequest& q, Scratch& scratch, CacheVisit& visit, RayOutputs& outputs) const;
+    PathState recordRays(const RecordRequest& q, Scratch& scratch) const;
+
     const SurfaceCache* cache_;
+    const VolumeCache* volumes_;
     const RenderSettings& settings_;
     const Tracer& tracer_;
     const HitShading& shading_;

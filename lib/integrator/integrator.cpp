@@ -21,7 +21,8 @@ uint64_t runSeed(const RenderSettings& settings) {
 
 }  // namespace
 
-Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings, const SurfaceCache* cache)
+Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings, const SurfaceCache* cache,
+                       const VolumeCache* volumes)
     : scene_(scene),
       settings_(inBands(settings)),
       seeds_{runSeed(settings)},
@@ -32,9 +33,9 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       lights_(scene, settings_, shading_, media_, shadowRays_),
       portals_(scene, shading_, shadowRays_, settings_.skyPortals),
       patches_(scene, shading_, shadowRays_, lights_, settings_.skyPortals),
-      cache_(cache, settings_, *this, shading_, media_, portals_, patches_, seeds_),
+      cache_(cache, volumes, settings_, *this, shading_, media_, portals_, patches_, seeds_),
       surfaces_(scene, settings_, lights_, portals_, patches_, cache_, *this, roulette_),
-      mediaTransport_(scene, settings_, lights_, *this, roulette_) {
+      mediaTransport_(scene, settings_, lights_, cache_, *this, roulette_) {
     const Bounds3& extent = scene.geometry().extent();
     epsilon_ = 1e-7 * (extent.empty() ? 1.0 : glm::length(extent.hi - extent.lo));
     media_.prepare(settings.time.value_or(0));

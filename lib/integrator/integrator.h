@@ -43,9 +43,10 @@ struct WorkItem {
 
 class Integrator final : public Tracer {
 public:
-    // `cache`: the irradiance cache to look records up in (null: none); it outlives the integrator. The
-    // settings' instant (-T, else 0) is prepared.
-    Integrator(const RenderScene& scene, const RenderSettings& settings, const SurfaceCache* cache = nullptr);
+    // `cache`, `volumes`: the irradiance caches to look records up in (null: none); they outlive the
+    // integrator. The settings' instant (-T, else 0) is prepared.
+    Integrator(const RenderScene& scene, const RenderSettings& settings, const SurfaceCache* cache = nullptr,
+               const VolumeCache* volumes = nullptr);
 
     // Makes rays at instant `time` possible (the smoke then); forgets the other instants. Not while rays are
     // traced.
@@ -63,6 +64,9 @@ public:
     int missesToPay(const RecordRequest& request) const { return cache_.missesToPay(request); }
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
         return cache_.makeRecord(request, scratch, visit);
+    }
+    VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
+        return cache_.makeVolumeRecord(request, scratch, visit);
     }
 
     // The seed of the samples of work item `index` (fixed by -u-, else new each run); pictures seed their

@@ -72,27 +72,30 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
     bool scatters = smoke.scatters(h), emits = smoke.emits();
     bool answer = state.kind != PathState::Kind::Sampled && state.ambientLevel == 0;
     if ((scatters || emits) && !answer) {
+        // The sources' light scattered toward the ray, at a point drawn toward them (delta tracking's collision
+        // would take it where it falls, and its 1/r² from a lamp nearby would be heavy-tailed); the rest of the
+        // light at that collision.
+        Spectrum value = scatters ? inScattered(ray, start, end, h, state, ctx, Part::Sources) : Spectrum(0.f);
         std::vector<MajorantSegment> segments;
         smoke.majorants(ray, start, end, &h, segments);
         auto extinction = [&](double t) { return h.extinction + smoke.smokeExtinction(ray.org + t * ray.dir); };
         Spectrum weight(1.f);
         auto collision = deltaTracking(segments, extinction, weight, ctx.rng);
-        if (!collision) return weight.isBlack() ? weight : behind(weight);
+        if (!collision) return weight.isBlack() ? value : value + behind(weight);
         dvec3 point = ray.org + *collision * ray.dir;
         Spectrum carried = weight / extinction(*collision);  // times σ_s: the albedo times what tracking carried
-        Spectrum value(0.f);
         if (emits) {
             // A ray drawn from a lobe keeps its share of the flames' light against next-event estimation, as
             // of a source it meets; what no flame sample can reach is its own.
             Spectrum emitted = smoke.emission(point) * carried;
             std::optional<double> share;
             if (state.kind == PathState::Kind::Sampled) share = lights_.flames().rayShare(smoke, state, ray.dir);
-            if (!share) value = emitted;
+            if (!share) value += emitted;
             else if (sourceShare) *sourceShare += emitted * float(*share);
         }
         PhaseMixture phase;
         smoke.scattering(point, h, carried, phase);
-        if (!phase.empty()) value += scattered(point, ray.dir, phase, state, ctx);
+        if (!phase.empty()) value += indirect(point, ray.dir, phase, state, ctx);
         return value;
     }
     // Flames' light along the ray at points of their own, the transmittance to what lies behind with it.
@@ -100,7 +103,7 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
     if (emits) value = smoke.emittedAlong(ray, start, end, h, ctx.rng, t);
     else t = smoke.transmittance(ray, start, end, h, ctx.rng);
     if (!t.isBlack()) value += behind(t);
-    if (scatters) value += inScattered(ray, start, end, h, state, ctx);
+    if (scatters) value += inScattered(ray, start, end, h, state, ctx, Part::All);
     return value;
 }
 
@@ -111,7 +114,8 @@ int MediaTransport::inScatteringSamples(double length) const {
     return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
 }
 
-// ∫ T(t) σ_s(t) L_s(t) dt over [start, end] (the light scattered toward the ray's origin), at points
+// ∫ T(t) σ_s(t) L_s(t) dt over [start, end] (the light scattered toward the ray's origin; of the sources
+// next-event estimation samples only, at one point, for Part::Sources), at points
 // drawn by a mixture of strategies, weighed by the mixture's density (MIS with the balance heuristic), and
 // stratified over the whole mixture (DistanceMixture): forced into the medium (ForcedCollision) by the majorant
 // of the largest band, and of the clearest one (clear bands see far, dense ones near, and T_λ σ_s / density
@@ -123,7 +127,7 @@ int MediaTransport::inScatteringSamples(double length) const {
 // bench/smoke.py case and with a lamp hidden in a box, whose draws are wasted; toward a large or far source
 // the draws spread along the ray much as the guards' do.)
 Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
-                                     const PathState& state, PathContext& ctx) const {
+                                     const PathState& state, PathContext& ctx, Part part) const {
     const ParticipatingMedia& smoke = ctx.smoke;
     std::vector<MajorantSegment> dense, clear;
     smoke.majorants(ray, start, end, &h, dense);
@@ -148,7 +152,7 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
     mixture.add(uniform, &even);
     mixture.add(mixed ? forced / 2 : forced, &near);
     if (mixed) mixture.add(forced / 2, &far);
-    int n = inScatteringSamples(even.length());
+    int n = part == Part::All ? inScatteringSamples(even.length()) : 1;
     Spectrum sum(0.f);
     double t = -std::numeric_limits<double>::infinity();
     for (int k = 0; k < n; ++k) {
@@ -161,27 +165,61 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
         Spectrum weight = tr * float(1 / (density * n));
         PhaseMixture phase;
         smoke.scattering(point, h, weight, phase);
-        if (!phase.empty()) sum += scattered(point, ray.dir, phase, state, ctx);
+        if (phase.empty()) continue;
+        if (part == Part::All) sum += scattered(point, ray.dir, phase, state, ctx);
+        else sum += lights_.sampleLd(Scatterer(point, ray.dir, phase, false), SurfaceId{}, state, ctx);
     }
     return sum;
 }
 
 // The light a medium at `point` scatters back along the ray of direction `dir`, the phase's coefficients
-// included: the sources' by next-event estimation, the rest by one ray drawn from the phase function while
-// -ab bounces remain (a scattering is a bounce, as a diffuse reflection is), else -av.
+// included: the sources' by next-event estimation, the rest from the volume records where there are, else by
+// one ray drawn from the phase function while -ab bounces remain (a scattering is a bounce, as a diffuse
+// reflection is), else -av.
 Spectrum MediaTransport::scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase,
                                    const PathState& state, PathContext& ctx) const {
     bool beyond = state.ambientLevel >= settings_.ambientBounces;
+    Spectrum records;
+    if (!beyond && fromRecords(point, dir, phase, state, ctx, records))
+        return lights_.sampleLd(Scatterer(point, dir, phase, false), SurfaceId{}, state, ctx) + records;
     bool continues = !beyond || settings_.bounceTail();
     Spectrum value = lights_.sampleLd(Scatterer(point, dir, phase, continues), SurfaceId{}, state, ctx);
     if (!continues) return value + phase.coefficient() * settings_.ambientValue;
+    return value + continued(point, dir, phase, state, ctx, true);
+}
+
+// The same but the sources' light (which next-event estimation gives elsewhere on the ray): the drawn ray
+// leaves out the sources it meets.
+Spectrum MediaTransport::indirect(const dvec3& point, const dvec3& dir, const PhaseMixture& phase,
+                                  const PathState& state, PathContext& ctx) const {
+    bool beyond = state.ambientLevel >= settings_.ambientBounces;
+    Spectrum records;
+    if (!beyond && fromRecords(point, dir, phase, state, ctx, records)) return records;
+    if (beyond && !settings_.bounceTail()) return phase.coefficient() * settings_.ambientValue;
+    return continued(point, dir, phase, state, ctx, false);
+}
+
+bool MediaTransport::fromRecords(const dvec3& point, const dvec3& dir, const PhaseMixture& phase,
+                                 const PathState& state, PathContext& ctx, Spectrum& value) const {
+    return cache_.inScattered(Receiver{point, std::nullopt, state.ambientLevel, ctx.time}, dir, phase, state.weight,
+                              ctx, value);
+}
+
+// One ray drawn from the phase function, one bounce deeper (past -ab by Russian roulette): with
+// `sharesSources`, it keeps its multiple-importance share of the sources it meets, else none of their light.
+Spectrum MediaTransport::continued(const dvec3& point, const dvec3& dir, const PhaseMixture& phase,
+                                   const PathState& state, PathContext& ctx, bool sharesSources) const {
+    bool beyond = state.ambientLevel >= settings_.ambientBounces;
     double u = ctx.rng.uniform(), v = ctx.rng.uniform();
     auto s = phase.sample(dir, u, v);
     PathState child;
     float boost;
-    if (!s || !roulette_.spawn(state, child, s->weight, true, ctx.rng, boost, beyond)) return value;
+    if (!s || !roulette_.spawn(state, child, s->weight, true, ctx.rng, boost, beyond)) return Spectrum(0.f);
     child.ambientLevel = state.ambientLevel + 1;
-    return value + s->weight * tracer_.sampledRadiance(point, SurfaceId{}, s->wi, s->pdf, state, child, ctx) * boost;
+    if (sharesSources) return s->weight * tracer_.sampledRadiance(point, SurfaceId{}, s->wi, s->pdf, state, child, ctx) * boost;
+    lights_.drawnFrom(child, point, s->pdf, state);
+    Ray ray{point, s->wi, std::numeric_limits<double>::infinity(), SurfaceId{}};
+    return s->weight * tracer_.radiance(ray, child, ctx, nullptr) * boost;
 }
 
 }  // namespace brume

@@ -3,8 +3,10 @@
 // Rays whose value is the answer (primary rays and their specular children) see what lies behind the
 // medium weighted by its transmittance, flames' light summed along them (ParticipatingMedia::emittedAlong)
 // and in-scattering at points forced into the medium; rays averaged with many others (diffuse and sampled
-// ones) take delta tracking's first collision or the surface behind.
+// ones) take the sources' light at one such point and the rest at delta tracking's first collision, or the
+// surface behind. Where scattering points find volume records, these give all but the sources' light there.
 #pragma once
+#include "integrator/cache_client.h"
 #include "integrator/light_sampler.h"
 #include "integrator/media.h"
 #include "integrator/tracer.h"
@@ -14,8 +16,8 @@ namespace brume {
 class MediaTransport {
 public:
     MediaTransport(const RenderScene& scene, const RenderSettings& settings, const LightSampler& lights,
-                   const Tracer& tracer, const RussianRoulette& roulette)
-        : scene_(scene), settings_(settings), lights_(lights), tracer_(tracer), roulette_(roulette) {}
+                   const CacheClient& cache, const Tracer& tracer, const RussianRoulette& roulette)
+        : scene_(scene), settings_(settings), lights_(lights), cache_(cache), tracer_(tracer), roulette_(roulette) {}
 
     // The radiance along a ray that crosses media (`h` the homogeneous one along it) to `hit`, or past every
     // surface: what lies behind them as they let it through, and what they scatter and emit toward the ray.
@@ -23,15 +25,26 @@ public:
                    const PathState& state, PathContext& ctx, Spectrum* sourceShare) const;
 
 private:
+    // What in-scattering sums: all the light, or the sources' that next-event estimation samples.
+    enum class Part { All, Sources };
     Spectrum inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h, const PathState& state,
-                         PathContext& ctx) const;
+                         PathContext& ctx, Part part) const;
     Spectrum scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
                        PathContext& ctx) const;
+    Spectrum indirect(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
+                      PathContext& ctx) const;
+    // What the volume records say the phase at `point` scatters along the ray (true), or false: no record
+    // (the path samples that light itself).
+    bool fromRecords(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
+                     PathContext& ctx, Spectrum& value) const;
+    Spectrum continued(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
+                       PathContext& ctx, bool sharesSources) const;
     int inScatteringSamples(double length) const;
 
     const RenderScene& scene_;
     const RenderSettings& settings_;
     const LightSampler& lights_;
+    const CacheClient& cache_;
     const Tracer& tracer_;
     const RussianRoulette& roulette_;
 };

@@ -58,7 +58,7 @@ public:
 // constructor wires them (the settings' instant prepared), and a scratch for the contexts of their paths.
 struct Parts {
     explicit Parts(const std::string& text, const RenderSettings& s = test::fixedSeed(),
-                   const SurfaceCache* surfaceCache = nullptr)
+                   const SurfaceCache* surfaceCache = nullptr, const VolumeCache* volumeCache = nullptr)
         : scene(text),
           settings(inBands(s)),
           tracer(Spectrum(1.f)),
@@ -69,9 +69,9 @@ struct Parts {
           lights(scene.render, settings, shading, media, shadowRays),
           portals(scene.render, shading, shadowRays, settings.skyPortals),
           patches(scene.render, shading, shadowRays, lights, settings.skyPortals),
-          cache(surfaceCache, settings, tracer, shading, media, portals, patches, Seeds{s.seed}),
+          cache(surfaceCache, volumeCache, settings, tracer, shading, media, portals, patches, Seeds{s.seed}),
           surfaces(scene.render, settings, lights, portals, patches, cache, tracer, roulette),
-          transport(scene.render, settings, lights, tracer, roulette),
+          transport(scene.render, settings, lights, cache, tracer, roulette),
           scratch(scene.render) {
         media.prepare(instant());
     }

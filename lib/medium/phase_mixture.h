@@ -40,6 +40,12 @@ public:
         return sum;
     }
 
+    // Calls f(coefficient, g) for each lobe.
+    template <class F>
+    void forEachLobe(F&& f) const {
+        for (int j = 0; j < count_; ++j) f(components_[j].coefficient, components_[j].phase.g());
+    }
+
     // Σ coefficient × p(θ), per steradian.
     Spectrum response(const dvec3& dir, const dvec3& wi) const {
         double c = glm::dot(wi, dir);

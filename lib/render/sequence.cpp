@@ -21,12 +21,22 @@ std::unique_ptr<SurfaceCache> makeCache(const RenderScene& scene, const RenderSe
                                           scene.variesInTime());
 }
 
-std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings, SurfaceCache* cache) {
+// Only where some medium is (else no volume records, no cost).
+std::unique_ptr<VolumeCache> makeVolumeCache(const RenderScene& scene, const RenderSettings& settings) {
+    if (!settings.usesCache() || (settings.medium.clear() && !scene.hasMists() && scene.smoke().empty())) return nullptr;
+    return std::make_unique<VolumeCache>(VolumeZones(recordShape(scene, settings)), scene.geometry().origin(),
+                                         scene.variesInTime());
+}
+
+std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings, SurfaceCache* cache,
+                                               const VolumeCache* volumes) {
     if (settings.cacheFile.empty()) return nullptr;
     if (!cache) {
         warn("-af " + settings.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
         return nullptr;
     }
+    if (volumes)
+        warn("-af " + settings.cacheFile + " keeps surface records only: records in media are made afresh each run");
     CacheIdentity identity{sceneContentHash(scene), cacheOptions(settings), Spectrum::defaultChannels()};
     return std::make_unique<PersistentCache>(settings.cacheFile, identity, *cache);
 }
@@ -52,13 +62,34 @@ RecordShape recordShape(const RenderScene& scene, const RenderSettings& settings
 
 Sequence::Sequence(const Scene& scene, const RenderScene& renderScene, const RenderSettings& settings)
     : cache_(makeCache(renderScene, settings)),
-      integrator_(renderScene, settings, cache_.get()),
-      cacheFile_(openCacheFile(scene, settings, cache_.get())),
+      volumes_(makeVolumeCache(renderScene, settings)),
+      integrator_(renderScene, settings, cache_.get(), volumes_.get()),
+      cacheFile_(openCacheFile(scene, settings, cache_.get(), volumes_.get())),
       scratch_([&renderScene] { return Scratch(renderScene); }) {}
 
 void Sequence::moveTo(double time) {
     integrator_.moveTo(time);
     if (cache_) cache_->keepOnly(time);
+    if (volumes_) volumes_->keepOnly(time);
+}
+
+void Sequence::makeRecords(const std::vector<RecordRequest>& requests) {
+    std::vector<RecordRequest> onSurfaces, inMedia;
+    for (const RecordRequest& q : requests) (q.at.normal ? onSurfaces : inMedia).push_back(q);
+    auto missesToPay = [this](const RecordRequest& q) { return integrator_.missesToPay(q); };
+    auto deeper = [this](const std::vector<RecordRequest>& more) { makeRecords(more); };
+    if (!onSurfaces.empty())
+        brume::makeRecords(
+            *cache_, onSurfaces, missesToPay,
+            [this](const RecordRequest& q, CacheVisit& visit) { return integrator_.makeRecord(q, scratch_.local(), visit); },
+            deeper);
+    if (!inMedia.empty())
+        brume::makeRecords(
+            *volumes_, inMedia, missesToPay,
+            [this](const RecordRequest& q, CacheVisit& visit) {
+                return integrator_.makeVolumeRecord(q, scratch_.local(), visit);
+            },
+            deeper);
 }
 
 void Sequence::run(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item) {
@@ -75,10 +106,6 @@ void Sequence::runPart(size_t count, double time, const std::function<void(size_
         });
         return;
     }
-    auto missesToPay = [this](const RecordRequest& q) { return integrator_.missesToPay(q); };
-    auto make = [this](const RecordRequest& q, CacheVisit& visit) {
-        return integrator_.makeRecord(q, scratch_.local(), visit);
-    };
     std::vector<size_t> pending(count);
     std::iota(pending.begin(), pending.end(), size_t(0));
     for (int pass = 0; !pending.empty(); ++pass) {
@@ -99,7 +126,7 @@ void Sequence::runPart(size_t count, double time, const std::function<void(size_
             again.push_back(pending[p]);
             requests.insert(requests.end(), visits[p].requests.begin(), visits[p].requests.end());
         }
-        makeRecords(*cache_, requests, missesToPay, make);
+        makeRecords(requests);
         pending.swap(again);
     }
 }

@@ -1,6 +1,6 @@
 // The work of one run, in order — rtrace's batches of rays, rpict's frames, mkcache's points or picture —
-// served by one integrator and, with -ab and -aa > 0, one irradiance cache (and its -af file) whose records
-// serve every later item at their instant.
+// served by one integrator and, with -ab and -aa > 0, one irradiance cache (and its -af file) and one volume
+// cache (records in media), whose records serve every later item at their instant.
 //
 // With the cache, work items run in passes (build, then render): every pass looks records up in a cache that
 // does not change while it runs; an item that found no record where it needed one runs again in the next
@@ -14,6 +14,7 @@
 
 #include "cache/persistent_cache.h"
 #include "cache/surface_cache.h"
+#include "cache/volume_cache.h"
 #include "integrator/integrator.h"
 #include "render/frames.h"
 #include "render/picture_renderer.h"
@@ -34,6 +35,8 @@ public:
     const Integrator& integrator() const { return integrator_; }
     // The irradiance cache, or null when -ab, -aa or -ad is 0.
     const SurfaceCache* cache() const { return cache_.get(); }
+    // The volume cache, there whenever the irradiance cache is (it holds records only where media scatter).
+    const VolumeCache* volumes() const { return volumes_.get(); }
 
     // Runs work items 0 … count-1 at instant `time` on all threads, each given its thread's scratch and its
     // cache visit, in passes as the cache needs them; then appends the records made to the -af file.
@@ -47,8 +50,12 @@ public:
 
 private:
     void moveTo(double time);
+    // Makes the records these requests call for, each in its cache (surface requests have a normal), and
+    // those their own rays ask for.
+    void makeRecords(const std::vector<RecordRequest>& requests);
 
     std::unique_ptr<SurfaceCache> cache_;
+    std::unique_ptr<VolumeCache> volumes_;
     Integrator integrator_;
     std::unique_ptr<PersistentCache> cacheFile_;
     tbb::enumerable_thread_specific<Scratch> scratch_;

@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Volume cache: run time against error of view rays through lit smoke, records in the media against path tracing.
+
+Scenes (those of bench/smoke.py, with indirect light):
+  corridor  the corridor of make demo in the FDS soot at t = 60 s and t = 120 s, its soot's albedo .2 and (a copy
+            of examples/corridor/smoke.rad) .8; 48 view rays from its near end, -ms .05.
+  plume     OpenVDB's smoke1 plume in a hall (albedo .9, g .3) lit by a ceiling panel, -ms 1.
+  halo      a small lamp in a room of fog (-me .3, albedo .9, g .6), -ms .5.
+At -ab 1 and -ab 3, with -al+ (nothing past -ab bounces, so that path tracing and the cache estimate the same
+light). Path tracing (-aa 0) repeats each ray r = 1, 4, 16, 64 times; the cache (-aa .1, and .05 at the last
+rung) traces the 48 rays r = 1, 4, 16 times in one run, its records shared by all of them (as a picture's are by
+its pixels). Each ray's mean against a reference of REFERENCE_REPEATS path-traced repeats (two threads); error:
+the RMS over the rays over the mean reference luminance (bench/smoke.py's). One thread, CPU seconds. The time
+to an error is interpolated along each ladder in log-log (bench.time_to); "sooner" is path tracing's time over
+the cache's at the smallest error both reach.
+Writes results/volume_cache.md and results/volume_cache_time_vs_error.png. Skipped without ../shared/data.
+"""
+import argparse
+import os
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from bench import RESULTS, Timer, git_commit, matplotlib_plot, time_to, write_result  # noqa: E402
+from smoke import (CORRIDOR, SOOT, scenes, luminances, normalised_rms, write_rays)  # noqa: E402
+
+REFERENCE_REPEATS = 400
+PATHS = [1, 4, 16, 64]
+CACHED = [(1, ".1"), (4, ".1"), (16, ".1"), (16, ".05")]
+
+
+def cases(tmp, chosen):
+    """(name, files, options, rays, RAYPATH) per measured case and -ab."""
+    base = {c[0]: c for c in scenes(tmp)}
+    pale = os.path.join(tmp, "pale_smoke.rad")
+    with open(os.path.join(CORRIDOR, "smoke.rad")) as f:
+        text = f.read()
+    with open(pale, "w") as f:
+        f.write(text.replace(".2 .2 .2  .6", ".8 .8 .8  .6"))
+    out = []
+    for bounces in (1, 3):
+        for name, albedo in (("corridor, t = 120 s", ".2"), ("corridor, t = 120 s", ".8"), ("corridor, t = 60 s", ".2"),
+                             ("plume", None), ("halo", None)):
+            _, files, options, rays, raypath, _ = base[name]
+            if albedo == ".8":
+                files = [files[0], pale]
+            label = f"{name}{', albedo ' + albedo if albedo else ''}, -ab {bounces}"
+            if chosen and not any(c in label for c in chosen):
+                continue
+            opts = [o for o in options]
+            opts[opts.index("-ab") + 1] = str(bounces)
+            out.append((label, files, opts + ["-al+"], rays, raypath))
+    return out
+
+
+def rtrace(bin_dir, tmp, case, repeats, extra, threads=1):
+    label, files, options, rays, raypath = case
+    cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-n", str(threads)] + options + extra + files
+    t = Timer(cmd, write_rays(tmp, rays, repeats), env=dict(os.environ, RAYPATH=f"{raypath}:{CORRIDOR}"))
+    return luminances(t.out, repeats), t.cpu
+
+
+def plot(series, png):
+    script = (
+        "fig, ax = plt.subplots(figsize=(7, 4.5))\n"
+        "cases = list(dict.fromkeys(n.rsplit(': ', 1)[0] for n in d))\n"
+        "for name, pts in d.items():\n"
+        "    colour = 'C%d' % (cases.index(name.rsplit(': ', 1)[0]) % 10)\n"
+        "    ax.loglog([p[0] for p in pts], [100 * p[1] for p in pts], 'o-' if 'cache' in name else 's--',\n"
+        "              color=colour, label=name)\n"
+        "ax.set_xlabel('CPU time (s)'); ax.set_ylabel('normalised RMS error (%)')\n"
+        "ax.set_title('Brume: view rays through lit smoke, volume cache (o) against path tracing (s)')\n"
+        "ax.legend(fontsize=6); ax.grid(alpha=.3, which='both')\n"
+        "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
+    return matplotlib_plot(script, series, png)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bin", default=os.path.join(os.path.dirname(HERE), "build", "bin"))
+    ap.add_argument("--only", nargs="*", default=[], help="cases whose label contains one of these")
+    args = ap.parse_args()
+    if not os.path.isdir(SOOT):
+        print(f"volume_cache: no {SOOT}: skipped", file=sys.stderr)
+        return
+    rows, series, summary = [], {}, []
+    with tempfile.TemporaryDirectory() as tmp:
+        for case in cases(tmp, args.only):
+            label = case[0]
+            reference, ref_cpu = rtrace(args.bin, tmp, case, REFERENCE_REPEATS, ["-aa", "0", "-u+"], threads=2)
+            paths, cached = [], []
+            for r in PATHS:
+                values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", "0", "-u+"])
+                paths.append((cpu, normalised_rms(values, reference)))
+                rows.append(f"| {label} | paths | {r} | {cpu:.2f} s | {100 * paths[-1][1]:.2f} % |")
+                print(f"  {label}, paths x{r}: {cpu:.2f} s, {100 * paths[-1][1]:.2f} %", file=sys.stderr)
+            for r, aa in CACHED:
+                values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"])
+                cached.append((cpu, normalised_rms(values, reference)))
+                rows.append(f"| {label} | cache -aa {aa} | {r} | {cpu:.2f} s | {100 * cached[-1][1]:.2f} % |")
+                print(f"  {label}, cache -aa {aa} x{r}: {cpu:.2f} s, {100 * cached[-1][1]:.2f} %", file=sys.stderr)
+            series[f"{label}: paths"], series[f"{label}: cache"] = paths, cached
+            # Reference: REFERENCE_REPEATS repeats, so its own error is path tracing's at 64 scaled by √(64/N).
+            own = paths[-1][1] * (PATHS[-1] / REFERENCE_REPEATS) ** .5
+            target = max(min(e for _, e in paths), min(e for _, e in cached))
+            tp, tc = time_to(paths, target), time_to(cached, target)
+            ratio = f"{tp / tc:.1f}x" if tp and tc else "n/a"
+            summary.append(f"| {label} | {100 * own:.2f} % | {100 * target:.2f} % | "
+                           f"{tp or float('nan'):.2f} s | {tc or float('nan'):.2f} s | {ratio} |")
+    text = (f"# Volume cache: time against error\n\nBrume {git_commit()}, one thread (bench/volume_cache.py; its "
+            "docstring says what is measured).\n\n| case | reference's own error | at error | paths | cache | "
+            "cache sooner |\n|---|---|---|---|---|---|\n" + "\n".join(summary) +
+            "\n\n| case | method | repeats | CPU | error |\n|---|---|---|---|---|\n" + "\n".join(rows) + "\n")
+    write_result(text, "volume_cache.md", plot(series, os.path.join(RESULTS, "volume_cache_time_vs_error.png")),
+                 "volume_cache_time_vs_error.png")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,22 @@
+// Volume records from sphere samples: the spherical-harmonic coefficients of the light arriving at the point,
+// their gradients, and the zone.
+#pragma once
+#include "cache/record_shape.h"
+#include "cache/sphere_samples.h"
+#include "cache/volume_record.h"
+
+namespace brume {
+
+// The record of the indirect light arriving at the samples' point, made for bounce `level`. Each sample is
+// an equivalent point source where its ray met a surface (Jarosz et al. 2008's gradients for volume radiance
+// caching take the same view): moving the point by δ changes its light by 2 ω·δ / d of itself, which gives the
+// gradients (none from samples that met nothing). Adaptive zones size the second-order change the same
+// sources make, their light's curvature averaged over the directions the point may move in (the Laplacian of
+// 1/r², 2/r⁴, a third of the trace; a surface record bounds the largest, 6/r⁴, but a sphere's volume grows
+// as r³, and lookups along a view ray average the errors of the records they cross), so that a first-order
+// extrapolation errs by about ε Φ at the zone's edge: r = √(2 ε Φ / Σ 2 E_i/d_i²), then at most the distance
+// over which the gradient would double or zero Φ. Classic zones: a sphere of radius ε R, R the samples' harmonic mean
+// distance, clamped as surface records'. The record's instant is the caller's to set.
+VolumeRecord buildVolumeRecord(const SphereSamples& samples, const RecordShape& shape, int level);
+
+}  // namespace brume

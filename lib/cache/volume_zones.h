@@ -1,0 +1,44 @@
+// Volume records as a kind of cache record (RecordStore's parameter): a sphere about each record's point where
+// it stands for its neighbours, with what weight; the light it says a medium scatters toward a ray there; how
+// its zone is boxed for the index; and how two records that disagree shrink their zones.
+#pragma once
+#include "cache/record_shape.h"
+#include "cache/volume_record.h"
+#include "cache/zone_index.h"
+#include "geometry/receiver.h"
+#include "medium/phase_mixture.h"
+
+namespace brume {
+
+class VolumeZones {
+public:
+    using Record = VolumeRecord;
+
+    explicit VolumeZones(const RecordShape& shape) : shape_(shape) {}
+    const RecordShape& shape() const { return shape_; }
+
+    // The record's weight at the receiver's point, 1/q − 1 with q its distance over the zone's radius (0
+    // outside). With `value`, the mean radiance arriving there, extrapolated by the record's gradient.
+    double weigh(const VolumeRecord& r, const Receiver& at, Spectrum* value) const;
+    // What the record says `phase` at p scatters back along a ray of direction `dir`: Σ over the lobes of
+    // coefficient × Σ_k g^l c_k(p) Y_k(dir), the coefficients extrapolated to p by their gradients (by at
+    // most as much as would zero or double the mean), each channel at least 0.
+    static Spectrum scattered(const VolumeRecord& r, const dvec3& p, const dvec3& dir, const PhaseMixture& phase);
+
+    ZoneBox box(const VolumeRecord& r, const dvec3& origin) const;
+    double reach(const VolumeRecord& r) const { return r.radius; }
+    // Every receiver in a medium faces every way.
+    int facing(const Receiver&) const { return 0; }
+    double size(const VolumeRecord& r) const { return r.radius; }
+    double sizeBeforeRecords() const;
+    // Splotch control, as surface records': each must agree with the other's mean radiance within twice the
+    // accuracy where its zone holds the other, else that zone shrinks to leave it out (by at most half).
+    void reconcile(VolumeRecord& fresh, VolumeRecord& older) const;
+
+private:
+    void shrinkToExclude(VolumeRecord& holder, const VolumeRecord& other) const;
+
+    RecordShape shape_;
+};
+
+}  // namespace brume
