@@ -6,7 +6,8 @@
 # error of the irradiance caches) takes --remake-reference and --rerun-radiance, and is left out with --skip-cache;
 # spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral; smoke.py
 # (time against error through FDS soot, with and without empty-space skipping) takes --repeat and is left out
-# with --skip-smoke; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
+# with --skip-smoke; volume_cache.py (time against error of view rays through lit smoke, volume cache against path
+# tracing; about an hour) is left out with --skip-smoke too; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
 # picture at -ab 5 against Radiance's cache) take --remake-reference and --rerun-radiance, and are left out with
 # --skip-daylight.
 set -euo pipefail
@@ -59,6 +60,8 @@ fi
 if ((!skip_smoke)); then
     echo
     python3 "$here/smoke.py" --bin "$bin" "${smoke_args[@]}"
+    echo
+    python3 "$here/volume_cache.py" --bin "$bin"
 fi
 if ((!skip_daylight)); then
     echo

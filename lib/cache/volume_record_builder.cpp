@@ -32,25 +32,26 @@ Variation variation(const SphereSamples& s) {
     return v;
 }
 
-double zoneRadius(const SphereSamples& s, const RecordShape& shape) {
+double zoneRadius(const SphereSamples& s, const RecordShape& shape, double nearestSource) {
     const double eps = shape.accuracy;
     if (shape.kind == RecordShape::Kind::Classic)
-        return eps * std::clamp(harmonicMeanDistance(s), shape.minRadius, shape.maxRadius);
+        return std::min(eps * std::clamp(harmonicMeanDistance(s), shape.minRadius, shape.maxRadius),
+                        std::max(std::sqrt(eps) * nearestSource, eps * shape.minRadius));
     Variation v = variation(s);
     double r = v.curvature > 0 ? std::sqrt(2 * eps * v.fluence / v.curvature) : shape.maxRadius;
     double slope = glm::length(v.gradient);
     if (slope * r > v.fluence && slope > 0) r = v.fluence / slope;
-    r = std::clamp(r, eps * shape.minRadius, shape.maxRadius);
+    r = std::clamp(std::min(r, std::sqrt(eps) * nearestSource), eps * shape.minRadius, shape.maxRadius);
     return std::isfinite(r) && r > 0 ? r : eps * shape.minRadius;
 }
 
 }  // namespace
 
-VolumeRecord buildVolumeRecord(const SphereSamples& s, const RecordShape& shape, int level) {
+VolumeRecord buildVolumeRecord(const SphereSamples& s, const RecordShape& shape, int level, double nearestSource) {
     VolumeRecord r;
     r.point = s.point();
     r.level = level;
-    r.radius = float(zoneRadius(s, shape));
+    r.radius = float(zoneRadius(s, shape, nearestSource));
     const int ch = s.channels();
     r.values.assign(size_t(VolumeRecord::kFields) * kShCount * ch, 0.f);
     std::vector<double> sum(r.values.size(), 0.0);

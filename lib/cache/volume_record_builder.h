@@ -1,6 +1,8 @@
 // Volume records from sphere samples: the spherical-harmonic coefficients of the light arriving at the point,
 // their gradients, and the zone.
 #pragma once
+#include <limits>
+
 #include "cache/record_shape.h"
 #include "cache/sphere_samples.h"
 #include "cache/volume_record.h"
@@ -16,7 +18,12 @@ namespace brume {
 // as r³, and lookups along a view ray average the errors of the records they cross), so that a first-order
 // extrapolation errs by about ε Φ at the zone's edge: r = √(2 ε Φ / Σ 2 E_i/d_i²), then at most the distance
 // over which the gradient would double or zero Φ. Classic zones: a sphere of radius ε R, R the samples' harmonic mean
-// distance, clamped as surface records'. The record's instant is the caller's to set.
-VolumeRecord buildVolumeRecord(const SphereSamples& samples, const RecordShape& shape, int level);
+// distance, clamped as surface records'. Either way at most √ε times `nearestSource`, the distance to the
+// nearest lamp: the light lamps scatter in the medium around them, which a record holds (it reaches the point
+// by one more scattering), comes from about that far, not from the surfaces the rays met, and varies over that
+// scale (as an equivalent point source of all the record's light there: 2Φ/D²). The record's instant is the
+// caller's to set.
+VolumeRecord buildVolumeRecord(const SphereSamples& samples, const RecordShape& shape, int level,
+                               double nearestSource = std::numeric_limits<double>::infinity());
 
 }  // namespace brume

@@ -50,6 +50,16 @@ PathState CacheClient::recordRays(const RecordRequest& q, Scratch& scratch) cons
     return child;
 }
 
+double CacheClient::nearestSource(const dvec3& p) const {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Light& light : scene_.lights()) {
+        if (light.isDistant() || !light.emitter().isDirectSource()) continue;
+        double radius = 0.5 * light.size();
+        nearest = std::min(nearest, std::max(glm::length(light.center() - p) - radius, radius));
+    }
+    return nearest;
+}
+
 SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
@@ -92,7 +102,7 @@ VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scra
             samples.set(samples.cell(j, k), dir, l.clampFinite(), hit.firstLength);
         }
     }
-    VolumeRecord record = buildVolumeRecord(samples, volumes_->kind().shape(), q.at.level);
+    VolumeRecord record = buildVolumeRecord(samples, volumes_->kind().shape(), q.at.level, nearestSource(point));
     record.time = q.at.time;
     return record;
 }

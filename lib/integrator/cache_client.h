@@ -17,11 +17,11 @@ class CacheClient {
 public:
     // `cache` and `volumes` may be null (no cache: -ab or -aa 0); `seeds` seed the records' rays by their
     // requests' keys.
-    CacheClient(const SurfaceCache* cache, const VolumeCache* volumes, const RenderSettings& settings,
-                const Tracer& tracer, const HitShading& shading, const Media& media, const SkyPortals& portals,
-                const SunPatches& patches, Seeds seeds)
-        : cache_(cache), volumes_(volumes), settings_(settings), tracer_(tracer), shading_(shading), media_(media),
-          portals_(portals), patches_(patches), seeds_(seeds) {}
+    CacheClient(const SurfaceCache* cache, const VolumeCache* volumes, const RenderScene& scene,
+                const RenderSettings& settings, const Tracer& tracer, const HitShading& shading, const Media& media,
+                const SkyPortals& portals, const SunPatches& patches, Seeds seeds)
+        : cache_(cache), volumes_(volumes), scene_(scene), settings_(settings), tracer_(tracer), shading_(shading),
+          media_(media), portals_(portals), patches_(patches), seeds_(seeds) {}
 
     const SurfaceCache* cache() const { return cache_; }
     const VolumeCache* volumes() const { return volumes_; }
@@ -67,9 +67,12 @@ private:
     // The context and the first state of a record's rays, one bounce deeper than the request.
     PathContext recordContext(const RecordRequest& q, Scratch& scratch, CacheVisit& visit, RayOutputs& outputs) const;
     PathState recordRays(const RecordRequest& q, Scratch& scratch) const;
+    // The distance from p to the nearest lamp's surface (not less than its radius); infinite without lamps.
+    double nearestSource(const dvec3& p) const;
 
     const SurfaceCache* cache_;
     const VolumeCache* volumes_;
+    const RenderScene& scene_;
     const RenderSettings& settings_;
     const Tracer& tracer_;
     const HitShading& shading_;
