@@ -427,6 +427,25 @@ def matplotlib_plot(script, data, png):
     return False
 
 
+def ladders_plot(series, png, title, case_separator, solid):
+    """Time against error on log-log axes of ladders {name: [(CPU s, RMS error)]}: one colour per case (the name
+    before its last case_separator), solid lines with circles for ladders whose name holds `solid`, dashed with
+    squares for the others. False if no Python has matplotlib."""
+    script = (
+        "sep, solid, title = d['sep'], d['solid'], d['title']\n"
+        "fig, ax = plt.subplots(figsize=(7, 4.5))\n"
+        "cases = list(dict.fromkeys(n.rsplit(sep, 1)[0] for n in d['series']))\n"
+        "for name, pts in d['series'].items():\n"
+        "    colour = 'C%d' % (cases.index(name.rsplit(sep, 1)[0]) % 10)\n"
+        "    ax.loglog([p[0] for p in pts], [100 * p[1] for p in pts], 'o-' if solid in name else 's--',\n"
+        "              color=colour, label=name)\n"
+        "ax.set_xlabel('CPU time (s)'); ax.set_ylabel('normalised RMS error (%)')\n"
+        "ax.set_title(title)\n"
+        "ax.legend(fontsize=7); ax.grid(alpha=.3, which='both')\n"
+        "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
+    return matplotlib_plot(script, {"series": series, "sep": case_separator, "solid": solid, "title": title}, png)
+
+
 def write_result(text, name, plotted, png_name):
     """Prints `text`, writes it to results/<name>, and says on stderr when the plot could not be drawn."""
     print(text)

@@ -32,7 +32,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench import (RESULTS, ROOT, Timer, best_of, find_radiance, git_commit, lux, matplotlib_plot, read_rgb,  # noqa: E402
+from bench import (RESULTS, ROOT, Timer, best_of, find_radiance, git_commit, ladders_plot, lux, read_rgb,  # noqa: E402
                    write_result)
 
 CORRIDOR = os.path.join(ROOT, "examples", "corridor")
@@ -195,18 +195,8 @@ def far_cost(bin_dir, tmp, repeat):
 
 
 def plot(series, png):
-    script = (
-        "fig, ax = plt.subplots(figsize=(7, 4.5))\n"
-        "scenes = list(dict.fromkeys(n.rsplit(', -mc', 1)[0] for n in d))\n"
-        "for name, pts in d.items():\n"
-        "    colour = 'C%d' % scenes.index(name.rsplit(', -mc', 1)[0])\n"
-        "    ax.loglog([p[0] for p in pts], [100 * p[1] for p in pts], 'o-' if '-mc 8' in name else 's--',\n"
-        "              color=colour, label=name)\n"
-        "ax.set_xlabel('CPU time (s)'); ax.set_ylabel('normalised RMS error (%)')\n"
-        "ax.set_title('Brume: view rays through smoke, with and without empty-space skipping')\n"
-        "ax.legend(fontsize=7); ax.grid(alpha=.3, which='both')\n"
-        "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
-    return matplotlib_plot(script, series, png)
+    return ladders_plot(series, png, "Brume: view rays through smoke, with and without empty-space skipping",
+                        ", -mc", "-mc 8")
 
 
 def main():

@@ -22,7 +22,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench import RESULTS, Timer, git_commit, matplotlib_plot, time_to, write_result  # noqa: E402
+from bench import RESULTS, Timer, git_commit, ladders_plot, time_to, write_result  # noqa: E402
 from smoke import (CORRIDOR, SOOT, scenes, luminances, normalised_rms, write_rays)  # noqa: E402
 
 REFERENCE_REPEATS = 400
@@ -62,18 +62,8 @@ def rtrace(bin_dir, tmp, case, repeats, extra, threads=1):
 
 
 def plot(series, png):
-    script = (
-        "fig, ax = plt.subplots(figsize=(7, 4.5))\n"
-        "cases = list(dict.fromkeys(n.rsplit(': ', 1)[0] for n in d))\n"
-        "for name, pts in d.items():\n"
-        "    colour = 'C%d' % (cases.index(name.rsplit(': ', 1)[0]) % 10)\n"
-        "    ax.loglog([p[0] for p in pts], [100 * p[1] for p in pts], 'o-' if 'cache' in name else 's--',\n"
-        "              color=colour, label=name)\n"
-        "ax.set_xlabel('CPU time (s)'); ax.set_ylabel('normalised RMS error (%)')\n"
-        "ax.set_title('Brume: view rays through lit smoke, volume cache (o) against path tracing (s)')\n"
-        "ax.legend(fontsize=6); ax.grid(alpha=.3, which='both')\n"
-        "fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)\n")
-    return matplotlib_plot(script, series, png)
+    return ladders_plot(series, png, "Brume: view rays through lit smoke, volume cache (o) against path tracing (s)",
+                        ": ", "cache")
 
 
 def main():

@@ -40,9 +40,8 @@ RenderSettings cached(int bounces, double accuracy = 0.1) {
 
 std::vector<Sensor> onTheSphere(int n) {
     std::vector<Sensor> sensors;
-    for (int i = 0; i < n; ++i) {  // a Fibonacci spiral over the wall, facing the centre
-        double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), phi = i * pi * (3 - std::sqrt(5.0));
-        dvec3 d(r * std::cos(phi), r * std::sin(phi), z);
+    for (int i = 0; i < n; ++i) {  // over the wall, facing the centre
+        dvec3 d = fibonacciSphere(i, n);
         sensors.push_back({d * (1 - 1e-4), -d});
     }
     return sensors;

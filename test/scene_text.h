@@ -1,7 +1,9 @@
 // Helpers for tests that build scenes from .rad text and compute with the library.
 #pragma once
+#include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -30,6 +32,13 @@ inline std::string integratingSphere(double rho) {
       << "void light lamp 0 0 3 1000 1000 1000\n"
       << "lamp sphere bulb 0 0 4 0 0 0 0.02\n";
     return s.str();
+}
+
+// Point i of n on the unit sphere, spread evenly by a Fibonacci spiral.
+inline glm::dvec3 fibonacciSphere(size_t i, size_t n) {
+    double z = 1 - (2 * double(i) + 1) / double(n), r = std::sqrt(1 - z * z);
+    double phi = double(i) * std::numbers::pi * (3 - std::sqrt(5.0));
+    return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 // A scene ready to trace; holds the parsed scene so the compiled one can refer to it.

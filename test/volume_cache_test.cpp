@@ -39,8 +39,7 @@ TEST(VolumeCache, AWhiteFogInAClosedSphereKeepsItsEnergy) {
         const int n = 64;
         std::vector<double> values(n);
         sequence.run(n, 0, [&](size_t i, WorkItem& item) {
-            double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), phi = i * pi * (3 - std::sqrt(5.0));
-            dvec3 d(r * std::cos(phi), r * std::sin(phi), z);
+            dvec3 d = fibonacciSphere(i, n);
             values[i] = sequence.integrator().irradiance({d * (1 - 1e-4), -d, i}, item).value[0];
         });
         double mean = 0;

@@ -28,6 +28,12 @@ public:
     // The sample's radiance with Radiance's luminance weights (brightness() in spectrum.h).
     float brightness(int index) const { return brightnessOf(&radiance_[size_t(index) * channels_], channels_); }
     double distance(int index) const { return distance_[index]; }
+    // The harmonic mean of the rays' distances (infinite where none met a surface).
+    double harmonicMeanDistance() const {
+        double inverse = 0;
+        for (double d : distance_) inverse += 1 / d;
+        return inverse > 0 ? count() / inverse : std::numeric_limits<double>::infinity();
+    }
     const glm::dvec3& direction(int index) const { return direction_[index]; }
 
 protected:

@@ -148,12 +148,6 @@ Tangent brightnessOf(const std::vector<Tangent>& v) {
     return {brightnessOf(x), brightnessOf(y)};
 }
 
-double harmonicMeanDistance(const HemisphereSamples& hs) {
-    double inverse = 0;
-    for (int i = 0; i < hs.count(); ++i) inverse += 1 / hs.distance(i);
-    return inverse > 0 ? hs.count() / inverse : std::numeric_limits<double>::infinity();
-}
-
 dvec3 world(const HemisphereSamples& hs, const Tangent& t) { return t.x * hs.frame().s + t.y * hs.frame().t; }
 
 // Shortens each axis until the extrapolation to its ends and the point sources' prediction there agree.
@@ -190,7 +184,7 @@ SurfaceRecord buildRecord(const HemisphereSamples& hs, const RecordShape& shape,
     double radius[2];
     Tangent first{1, 0};
     if (shape.kind == RecordShape::Kind::Classic) {
-        radius[0] = radius[1] = eps * std::clamp(harmonicMeanDistance(hs), shape.minRadius, shape.maxRadius);
+        radius[0] = radius[1] = eps * std::clamp(hs.harmonicMeanDistance(), shape.minRadius, shape.maxRadius);
     } else {
         double lambda[2];
         curvatureBound(hs).eigen(lambda, first);

@@ -26,11 +26,10 @@ struct VolumeRecord {
 
     int channels() const { return int(values.size()) / (kFields * kShCount); }
     float value(int field, int k, int channel) const { return values[(size_t(field) * kShCount + k) * channels() + channel]; }
-    float& value(int field, int k, int channel) { return values[(size_t(field) * kShCount + k) * channels() + channel]; }
     // The mean radiance arriving over the sphere (the fluence over 4π) at the record's point, per channel.
     Spectrum meanRadiance() const {
         Spectrum s(0.f, channels());
-        for (int c = 0; c < channels(); ++c) s[c] = value(0, 0, c) * 0.28209479177387814f;
+        for (int c = 0; c < channels(); ++c) s[c] = value(0, 0, c) * float(kShY0);
         return s;
     }
 };

@@ -2,17 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace brume {
 
 namespace {
-
-double harmonicMeanDistance(const SphereSamples& s) {
-    double inverse = 0;
-    for (int i = 0; i < s.count(); ++i) inverse += 1 / s.distance(i);
-    return inverse > 0 ? s.count() / inverse : std::numeric_limits<double>::infinity();
-}
 
 // Φ's brightness, its gradient's and its curvature, Σ 2 E_i / d_i².
 struct Variation {
@@ -35,7 +28,7 @@ Variation variation(const SphereSamples& s) {
 double zoneRadius(const SphereSamples& s, const RecordShape& shape, double nearestSource) {
     const double eps = shape.accuracy;
     if (shape.kind == RecordShape::Kind::Classic)
-        return std::min(eps * std::clamp(harmonicMeanDistance(s), shape.minRadius, shape.maxRadius),
+        return std::min(eps * std::clamp(s.harmonicMeanDistance(), shape.minRadius, shape.maxRadius),
                         std::max(std::sqrt(eps) * nearestSource, eps * shape.minRadius));
     Variation v = variation(s);
     double r = v.curvature > 0 ? std::sqrt(2 * eps * v.fluence / v.curvature) : shape.maxRadius;

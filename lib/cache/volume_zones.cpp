@@ -8,18 +8,21 @@ namespace brume {
 
 namespace {
 
+// What the gradient of coefficient k in channel c adds over the offset delta from the record's point.
+double change(const VolumeRecord& r, const dvec3& delta, int k, int c) {
+    return r.value(1, k, c) * delta.x + r.value(2, k, c) * delta.y + r.value(3, k, c) * delta.z;
+}
+
 // How far from its own value channel c of the record may be extrapolated to p: the share of the gradient's
 // change that keeps the mean between 0 and twice the record's.
 double extrapolation(const VolumeRecord& r, const dvec3& delta, int c) {
-    double mean = r.value(0, 0, c);
-    double change = r.value(1, 0, c) * delta.x + r.value(2, 0, c) * delta.y + r.value(3, 0, c) * delta.z;
-    if (!(std::abs(change) > std::abs(mean))) return 1;
-    return std::abs(mean) / std::abs(change);
+    double mean = r.value(0, 0, c), dc = change(r, delta, 0, c);
+    if (!(std::abs(dc) > std::abs(mean))) return 1;
+    return std::abs(mean) / std::abs(dc);
 }
 
 double coefficientAt(const VolumeRecord& r, const dvec3& delta, double share, int k, int c) {
-    return r.value(0, k, c) +
-           share * (r.value(1, k, c) * delta.x + r.value(2, k, c) * delta.y + r.value(3, k, c) * delta.z);
+    return r.value(0, k, c) + share * change(r, delta, k, c);
 }
 
 }  // namespace
@@ -33,16 +36,15 @@ double VolumeZones::weigh(const VolumeRecord& r, const Receiver& at, Spectrum* v
         const int ch = r.channels();
         *value = Spectrum(0.f, ch);
         for (int c = 0; c < ch; ++c)
-            (*value)[c] = float(std::max(0.0, coefficientAt(r, delta, extrapolation(r, delta, c), 0, c)) *
-                                0.28209479177387814);
+            (*value)[c] = float(std::max(0.0, coefficientAt(r, delta, extrapolation(r, delta, c), 0, c)) * kShY0);
     }
     return w;
 }
 
-Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const dvec3& dir, const PhaseMixture& phase) {
+Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const std::array<double, kShCount>& y,
+                                const PhaseMixture& phase) {
     const int ch = r.channels();
     const dvec3 delta = p - r.point;
-    const auto y = shBasis(dir);
     // Per channel, the sums of c_k Y_k(dir) of each order.
     std::array<Spectrum, 3> order{Spectrum(0.f, ch), Spectrum(0.f, ch), Spectrum(0.f, ch)};
     for (int c = 0; c < ch; ++c) {

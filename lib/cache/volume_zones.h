@@ -2,6 +2,8 @@
 // it stands for its neighbours, with what weight; the light it says a medium scatters toward a ray there; how
 // its zone is boxed for the index; and how two records that disagree shrink their zones.
 #pragma once
+#include <array>
+
 #include "cache/record_shape.h"
 #include "cache/volume_record.h"
 #include "cache/zone_index.h"
@@ -20,10 +22,12 @@ public:
     // The record's weight at the receiver's point, 1/q − 1 with q its distance over the zone's radius (0
     // outside). With `value`, the mean radiance arriving there, extrapolated by the record's gradient.
     double weigh(const VolumeRecord& r, const Receiver& at, Spectrum* value) const;
-    // What the record says `phase` at p scatters back along a ray of direction `dir`: Σ over the lobes of
-    // coefficient × Σ_k g^l c_k(p) Y_k(dir), the coefficients extrapolated to p by their gradients (by at
-    // most as much as would zero or double the mean), each channel at least 0.
-    static Spectrum scattered(const VolumeRecord& r, const dvec3& p, const dvec3& dir, const PhaseMixture& phase);
+    // What the record says `phase` at p scatters back along a ray of direction dir, given Y_k(dir) as `basis`
+    // (shBasis: one per lookup, whatever the records): Σ over the lobes of coefficient × Σ_k g^l c_k(p) Y_k(dir),
+    // the coefficients extrapolated to p by their gradients (by at most as much as would zero or double the
+    // mean), each channel at least 0.
+    static Spectrum scattered(const VolumeRecord& r, const dvec3& p, const std::array<double, kShCount>& basis,
+                              const PhaseMixture& phase);
 
     ZoneBox box(const VolumeRecord& r, const dvec3& origin) const;
     double reach(const VolumeRecord& r) const { return r.radius; }

@@ -11,6 +11,11 @@ bool CacheClient::irradiance(const Receiver& at, const SurfaceId& surface, doubl
                              PathContext& ctx, Spectrum& value) const {
     if (!cache_ || !ctx.visit) return false;
     if (cache_->lookup(at, value)) return true;
+    return waitsFor(at, surface, pathWeight, coef, ctx, value);
+}
+
+bool CacheClient::waitsFor(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
+                           PathContext& ctx, Spectrum& value) const {
     float weight = float(std::min(1.0, pathWeight * std::min(1.0, double(coef.maxValue()))));
     if (!ctx.visit->miss(at, surface, weight)) return false;
     value = Spectrum(0.f);
@@ -21,17 +26,15 @@ bool CacheClient::inScattered(const Receiver& at, const dvec3& dir, const PhaseM
                               PathContext& ctx, Spectrum& value) const {
     if (!volumes_ || !ctx.visit) return false;
     Spectrum sum(0.f);
+    const auto basis = shBasis(dir);
     double total = volumes_->gather(at, [&](const VolumeRecord& r, double w) {
-        sum += VolumeZones::scattered(r, at.point, dir, phase) * float(w);
+        sum += VolumeZones::scattered(r, at.point, basis, phase) * float(w);
     });
     if (total > 0) {
         value = sum * float(1 / total);
         return true;
     }
-    float weight = float(std::min(1.0, pathWeight * std::min(1.0, double(phase.coefficient().maxValue()))));
-    if (!ctx.visit->miss(at, SurfaceId{}, weight)) return false;
-    value = Spectrum(0.f);
-    return true;
+    return waitsFor(at, SurfaceId{}, pathWeight, phase.coefficient(), ctx, value);
 }
 
 PathContext CacheClient::recordContext(const RecordRequest& q, Scratch& scratch, CacheVisit& visit,

@@ -67,6 +67,10 @@ private:
     // The context and the first state of a record's rays, one bounce deeper than the request.
     PathContext recordContext(const RecordRequest& q, Scratch& scratch, CacheVisit& visit, RayOutputs& outputs) const;
     PathState recordRays(const RecordRequest& q, Scratch& scratch) const;
+    // After a lookup found no record: notes the request (missed by a ray of the path's weight times the
+    // coefficient `coef`); true with value 0 when the item waits for it, false when the path samples on.
+    bool waitsFor(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
+                  PathContext& ctx, Spectrum& value) const;
     // The distance from p to the nearest lamp's surface (not less than its radius); infinite without lamps.
     double nearestSource(const dvec3& p) const;
 

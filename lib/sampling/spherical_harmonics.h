@@ -9,6 +9,8 @@
 namespace brume {
 
 constexpr int kShCount = 9;
+// Y_0, the constant function: a coefficient c_0 is the mean over the sphere times 4π Y_0.
+constexpr double kShY0 = 0.28209479177387814;
 // The order l of the k-th function.
 constexpr int shOrder(int k) { return k == 0 ? 0 : k < 4 ? 1 : 2; }
 
@@ -16,7 +18,7 @@ constexpr int shOrder(int k) { return k == 0 ? 0 : k < 4 ? 1 : 2; }
 // (2,1), (2,2).
 inline std::array<double, kShCount> shBasis(const glm::dvec3& d) {
     const double x = d.x, y = d.y, z = d.z;
-    return {0.28209479177387814,
+    return {kShY0,
             0.4886025119029199 * y,
             0.4886025119029199 * z,
             0.4886025119029199 * x,
