@@ -260,6 +260,21 @@ TEST_F(RtraceCli, CacheFileWithoutACacheIsIgnoredWithAWarning) {
     }
 }
 
+// -af where a medium scatters: the file keeps surface records and a warning says volume records are not kept;
+// without a medium, no such warning.
+TEST_F(RtraceCli, CacheFileInAMediumSaysVolumeRecordsAreNotKept) {
+    writeScene("room.rad", std::string(kScene) + kRoomWalls);
+    fs::remove(brume_test::scratchDir("cli") / "fog.af");
+    std::string points = floorSensors(-4, 4, 4);
+    Output fog = rtrace("-h -I -u- -ab 1 -ad 32 -me .1 .1 .1 -ma .5 .5 .5 -af fog.af room.rad", points);
+    EXPECT_EQ(fog.status, 0) << fog.err;
+    EXPECT_NE(fog.err.find("-af fog.af keeps surface records only"), std::string::npos) << fog.err;
+    EXPECT_TRUE(fs::exists(brume_test::scratchDir("cli") / "fog.af"));
+    fs::remove(brume_test::scratchDir("cli") / "clear.af");
+    Output clear = rtrace("-h -I -u- -ab 1 -ad 32 -af clear.af room.rad", points);
+    EXPECT_EQ(clear.err.find("surface records only"), std::string::npos) << clear.err;
+}
+
 // A cache file is never reused for other options or another scene: rtrace stops and says which.
 TEST_F(RtraceCli, CacheFilesOfOtherOptionsOrScenesAreRefused) {
     writeScene("room.rad", std::string(kScene) + kRoomWalls);
