@@ -136,6 +136,8 @@ int run(int argc, char** argv) {
     if (picture) cachePicture(o, sequence, progress);
     else cachePoints(o, sequence, progress);
     std::fprintf(stderr, "mkcache: %s: %s\n", o.render.cacheFile.c_str(), sequence.cache()->summary().c_str());
+    if (sequence.volumes())
+        std::fprintf(stderr, "mkcache: %s: in media, %s\n", o.render.cacheFile.c_str(), sequence.volumes()->summary().c_str());
     return 0;
 }
 

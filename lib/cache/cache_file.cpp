@@ -30,7 +30,10 @@ namespace {
 
 constexpr std::string_view kMagic = "#?BRUME_IRRADIANCE_CACHE";
 constexpr std::string_view kFormat = "brume_irradiance_cache 2";
-constexpr char kBlockTag[4] = {'S', 'U', 'R', 'F'};  // a block of surface records
+constexpr char kSurfaceTag[4] = {'S', 'U', 'R', 'F'};  // a block of surface records
+constexpr char kVolumeTag[4] = {'V', 'O', 'L', 'U'};   // a block of volume records
+// A volume record holds at most this many peaks (buildVolumeRecord keeps 32); more is a damaged file.
+constexpr int32_t kMaxPeaks = 1024;
 constexpr size_t kHeadSize = 16;
 // A header is a few hundred bytes; one without its empty line within this many is not a cache file's.
 constexpr size_t kMaxHeaderSize = 1 << 16;
@@ -131,6 +134,24 @@ const char* invalidity(const SurfaceRecord& r, int channels) {
     return nullptr;
 }
 
+const char* invalidity(const VolumeRecord& r, int channels) {
+    if (r.values.size() != size_t(VolumeRecord::kFields) * kShCount * channels) return "wrong number of values";
+    if (r.peakFlux.size() != r.peakRays.size() * channels) return "wrong number of peak values";
+    if (r.peaks() > kMaxPeaks) return "too many peaks";
+    if (!finite(r.point)) return "a coordinate is not finite";
+    if (!std::isfinite(r.time)) return "its time is not finite";
+    if (!(r.radius > 0) || !std::isfinite(r.radius)) return "its radius is not positive";
+    if (r.level < 0) return "its level is negative";
+    for (float v : r.values)
+        if (!std::isfinite(v)) return "a value is not finite";
+    for (const glm::vec4& ray : r.peakRays)
+        if (!(std::abs(glm::length(glm::vec3(ray)) - 1) < 1e-4f) || !(ray.w >= 0) || !std::isfinite(ray.w))
+            return "a peak's direction or distance is invalid";
+    for (float v : r.peakFlux)
+        if (!std::isfinite(v)) return "a peak's value is not finite";
+    return nullptr;
+}
+
 template <class T>
 void put(char*& p, T value) {
     std::memcpy(p, &value, sizeof value);
@@ -168,20 +189,63 @@ SurfaceRecord getRecord(const char*& p, int channels) {
     return r;
 }
 
+// A volume record's point, instant, radius, level and number of peaks; then its values.
+constexpr size_t kVolumeRecordHead = 4 * sizeof(double) + sizeof(float) + 2 * sizeof(int32_t);
+
+size_t volumeRecordSize(int peaks, int channels) {
+    return kVolumeRecordHead +
+           (size_t(VolumeRecord::kFields) * kShCount * channels + size_t(peaks) * (4 + channels)) * sizeof(float);
+}
+
+void putRecord(char*& p, const VolumeRecord& r) {
+    for (int i = 0; i < 3; ++i) put(p, r.point[i]);
+    put(p, r.time);
+    put(p, r.radius);
+    put(p, int32_t(r.level));
+    put(p, int32_t(r.peaks()));
+    for (float v : r.values) put(p, v);
+    for (const glm::vec4& ray : r.peakRays)
+        for (int i = 0; i < 4; ++i) put(p, ray[i]);
+    for (float v : r.peakFlux) put(p, v);
+}
+
+// The volume record at p, if the `end` of its block leaves room for it (else nothing: a damaged block).
+std::optional<VolumeRecord> getVolumeRecord(const char*& p, const char* end, int channels) {
+    if (size_t(end - p) < kVolumeRecordHead) return std::nullopt;
+    VolumeRecord r;
+    for (int i = 0; i < 3; ++i) r.point[i] = get<double>(p);
+    r.time = get<double>(p);
+    r.radius = get<float>(p);
+    r.level = get<int32_t>(p);
+    int32_t peaks = get<int32_t>(p);
+    if (peaks < 0 || peaks > kMaxPeaks || size_t(end - p) < volumeRecordSize(peaks, channels) - kVolumeRecordHead)
+        return std::nullopt;
+    r.values.resize(size_t(VolumeRecord::kFields) * kShCount * channels);
+    for (float& v : r.values) v = get<float>(p);
+    r.peakRays.resize(size_t(peaks));
+    for (glm::vec4& ray : r.peakRays)
+        for (int i = 0; i < 4; ++i) ray[i] = get<float>(p);
+    r.peakFlux.resize(size_t(peaks) * channels);
+    for (float& v : r.peakFlux) v = get<float>(p);
+    return r;
+}
+
 uint32_t crc(const char* data, size_t size) {
     return uint32_t(crc32_z(crc32_z(0, nullptr, 0), reinterpret_cast<const Bytef*>(data), size));
 }
 
-// The block head: its tag, the record count, the records' CRC and the CRC of these first 12 bytes.
+// The block head: its tag, the record count (surface records) or the records' size in bytes (volume records,
+// whose size varies with their peaks), the records' CRC and the CRC of these first 12 bytes.
 struct BlockHead {
-    uint32_t count = 0, recordsCrc = 0;
+    bool volumes = false;
+    uint32_t size = 0, recordsCrc = 0;
 };
 
 void putHead(char* p, const BlockHead& head) {
     char* start = p;
-    std::memcpy(p, kBlockTag, 4);
+    std::memcpy(p, head.volumes ? kVolumeTag : kSurfaceTag, 4);
     p += 4;
-    put(p, head.count);
+    put(p, head.size);
     put(p, head.recordsCrc);
     put(p, crc(start, 12));
 }
@@ -189,10 +253,11 @@ void putHead(char* p, const BlockHead& head) {
 // The head at `p`, or nothing if it is not one (a damaged file).
 std::optional<BlockHead> getHead(const char* p) {
     const char* start = p;
-    if (std::memcmp(p, kBlockTag, 4) != 0) return std::nullopt;
-    p += 4;
     BlockHead head;
-    head.count = get<uint32_t>(p);
+    head.volumes = std::memcmp(p, kVolumeTag, 4) == 0;
+    if (!head.volumes && std::memcmp(p, kSurfaceTag, 4) != 0) return std::nullopt;
+    p += 4;
+    head.size = get<uint32_t>(p);
     head.recordsCrc = get<uint32_t>(p);
     if (get<uint32_t>(p) != crc(start, 12)) return std::nullopt;
     return head;
@@ -289,7 +354,7 @@ void CacheFile::catchUp() {
         size_t got = readAt(fd_, path_, headBytes, kHeadSize, offset_);
         std::optional<BlockHead> head = got == kHeadSize ? getHead(headBytes) : std::nullopt;
         if (got == kHeadSize && !head) corrupted(path_, offset_, "damaged cache block (no block head)");
-        uint64_t recordsSize = head ? uint64_t(head->count) * recordSize_ : 0;
+        uint64_t recordsSize = !head ? 0 : head->volumes ? head->size : uint64_t(head->size) * recordSize_;
         if (!head || recordsSize > size - offset_ - kHeadSize) {
             // A writer died mid-append: writers hold the lock we hold until their block is whole.
             warn(path_ + ": dropping the incomplete block at byte " + std::to_string(offset_) +
@@ -302,17 +367,37 @@ void CacheFile::catchUp() {
         readAt(fd_, path_, records.data(), records.size(), offset_ + kHeadSize);
         if (crc(records.data(), records.size()) != head->recordsCrc)
             corrupted(path_, offset_, "damaged cache block (its checksum does not match its records)");
-        std::vector<SurfaceRecord> block;
-        const char* p = records.data();
-        for (uint32_t i = 0; i < head->count; ++i) {
-            block.push_back(getRecord(p, identity_.channels));
-            if (const char* why = invalidity(block.back(), identity_.channels))
-                corrupted(path_, offset_ + kHeadSize + i * recordSize_,
-                          std::string("damaged cache block (invalid record: ") + why + ")");
-        }
-        unread_.insert(unread_.end(), block.begin(), block.end());
+        if (head->volumes) readVolumes(records);
+        else readSurfaces(records, head->size);
         offset_ += kHeadSize + recordsSize;
     }
+}
+
+void CacheFile::readSurfaces(const std::string& records, uint32_t count) {
+    std::vector<SurfaceRecord> block;
+    const char* p = records.data();
+    for (uint32_t i = 0; i < count; ++i) {
+        block.push_back(getRecord(p, identity_.channels));
+        if (const char* why = invalidity(block.back(), identity_.channels))
+            corrupted(path_, offset_ + kHeadSize + i * recordSize_,
+                      std::string("damaged cache block (invalid record: ") + why + ")");
+    }
+    unread_.insert(unread_.end(), block.begin(), block.end());
+}
+
+void CacheFile::readVolumes(const std::string& records) {
+    std::vector<VolumeRecord> block;
+    const char *p = records.data(), *end = p + records.size();
+    while (p < end) {
+        uint64_t at = offset_ + kHeadSize + uint64_t(p - records.data());
+        std::optional<VolumeRecord> r = getVolumeRecord(p, end, identity_.channels);
+        if (!r) corrupted(path_, at, "damaged cache block (a volume record does not fit in it)");
+        if (const char* why = invalidity(*r, identity_.channels))
+            corrupted(path_, at, std::string("damaged cache block (invalid volume record: ") + why + ")");
+        block.push_back(std::move(*r));
+    }
+    unreadVolumes_.insert(unreadVolumes_.end(), std::make_move_iterator(block.begin()),
+                          std::make_move_iterator(block.end()));
 }
 
 std::vector<SurfaceRecord> CacheFile::readNew() {
@@ -320,6 +405,13 @@ std::vector<SurfaceRecord> CacheFile::readNew() {
     FileLock lock(fd_, path_);
     catchUp();
     return std::exchange(unread_, {});
+}
+
+std::vector<VolumeRecord> CacheFile::readNewVolumes() {
+    std::lock_guard guard(mutex_);
+    FileLock lock(fd_, path_);
+    catchUp();
+    return std::exchange(unreadVolumes_, {});
 }
 
 void CacheFile::append(const std::vector<SurfaceRecord>& records) {
@@ -331,7 +423,32 @@ void CacheFile::append(const std::vector<SurfaceRecord>& records) {
             throw std::invalid_argument(std::string("cannot cache an invalid irradiance record: ") + why);
         putRecord(p, r);
     }
-    putHead(block.data(), {uint32_t(records.size()), crc(block.data() + kHeadSize, block.size() - kHeadSize)});
+    putHead(block.data(), {false, uint32_t(records.size()), crc(block.data() + kHeadSize, block.size() - kHeadSize)});
+    appendBlock(block);
+}
+
+void CacheFile::append(const std::vector<VolumeRecord>& records) {
+    if (records.empty()) return;
+    size_t bytes = 0;
+    for (const VolumeRecord& r : records) {
+        if (const char* why = invalidity(r, identity_.channels))
+            throw std::invalid_argument(std::string("cannot cache an invalid volume record: ") + why);
+        bytes += volumeRecordSize(r.peaks(), identity_.channels);
+    }
+    if (bytes > std::numeric_limits<uint32_t>::max()) {  // a block's size is 32 bits: split in two
+        size_t half = records.size() / 2;
+        append(std::vector<VolumeRecord>(records.begin(), records.begin() + half));
+        append(std::vector<VolumeRecord>(records.begin() + half, records.end()));
+        return;
+    }
+    std::string block(kHeadSize + bytes, '\0');
+    char* p = block.data() + kHeadSize;
+    for (const VolumeRecord& r : records) putRecord(p, r);
+    putHead(block.data(), {true, uint32_t(bytes), crc(block.data() + kHeadSize, bytes)});
+    appendBlock(block);
+}
+
+void CacheFile::appendBlock(const std::string& block) {
     std::lock_guard guard(mutex_);
     FileLock lock(fd_, path_);
     // What others appended is read first: the file then ends at offset_, past any torn block.

@@ -11,8 +11,11 @@
 // record count, the CRC-32 of the records, the CRC-32 of the head's first 12 bytes) and the records. Surface
 // records ("SURF"): point, normal, axis as 3 doubles each (positions round-trip exactly), the instant as a
 // double, the two radii as floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
-// numbers are little-endian IEEE 754, as in memory on x86 and ARM. Other kinds of record (volume records)
-// will come as blocks of their own tag. Format 1 (records without an instant) is refused.
+// numbers are little-endian IEEE 754, as in memory on x86 and ARM. Volume records ("VOLU", whose head
+// holds the records' size in bytes where a surface block's holds their count): point and instant as 4
+// doubles, the radius as a float, the level and the number of peaks P as 32-bit integers, CHANNELS × 36
+// floats of coefficients and gradients, then per peak 4 floats (direction, inverse distance), then P ×
+// CHANNELS floats of the peaks' light. Format 1 (records without an instant) is refused.
 #pragma once
 #include <cstdint>
 #include <mutex>
@@ -20,6 +23,7 @@
 #include <vector>
 
 #include "cache/surface_record.h"
+#include "cache/volume_record.h"
 
 namespace brume {
 
@@ -47,16 +51,23 @@ public:
     // naming the file and byte offset of a corrupted block or an invalid record. A last block that a writer
     // left incomplete (it died mid-append) is dropped with a warning and cut from the file.
     std::vector<SurfaceRecord> readNew();
+    // The same for volume records.
+    std::vector<VolumeRecord> readNewVolumes();
     // Appends the records as one block, written with one write and synced before the lock is released.
     // Records must have `channels` values of each field and be valid (finite, unit normal and axis, positive
     // radii), else std::invalid_argument. Throws Error when the file cannot be written (it is left as it was).
     void append(const std::vector<SurfaceRecord>& records);
+    void append(const std::vector<VolumeRecord>& records);
 
     const std::string& path() const { return path_; }
 
 private:
-    // Reads the blocks added after offset_ into unread_, under the file lock.
+    // Reads the blocks added after offset_ into unread_ and unreadVolumes_, under the file lock.
     void catchUp();
+    void readSurfaces(const std::string& records, uint32_t count);
+    void readVolumes(const std::string& records);
+    // Writes a whole block (head and records) at the end of the file, under the file lock.
+    void appendBlock(const std::string& block);
     void checkHeader();
 
     std::string path_;
@@ -66,6 +77,7 @@ private:
     std::mutex mutex_;
     uint64_t offset_ = 0;  // where the first block not yet read starts
     std::vector<SurfaceRecord> unread_;
+    std::vector<VolumeRecord> unreadVolumes_;
 };
 
 }  // namespace brume

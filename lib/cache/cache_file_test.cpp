@@ -61,6 +61,36 @@ void expectSame(const std::vector<SurfaceRecord>& got, const std::vector<Surface
     }
 }
 
+// Volume record `id` with `peaks` peaks, its numbers as record()'s.
+VolumeRecord volumeRecord(double id, int peaks, int channels = 3) {
+    VolumeRecord r;
+    r.point = {id, 1.0 / 3 + id, std::nextafter(id, -1e300)};
+    r.time = std::nextafter(120 + id, 0.0);
+    r.radius = float(0.2 + id * 1e-3);
+    r.level = int(id) % 4;
+    for (int i = 0; i < VolumeRecord::kFields * kShCount * channels; ++i) r.values.push_back(float(id) * 0.29f - float(i));
+    for (int k = 0; k < peaks; ++k) {
+        r.peakRays.push_back(glm::vec4(glm::normalize(glm::vec3(std::sin(id + k), std::cos(id + k), 0.3f)), 1 / 3.f));
+        for (int c = 0; c < channels; ++c) r.peakFlux.push_back(float(id + k) / 7 + float(c));
+    }
+    return r;
+}
+
+void expectSame(const std::vector<VolumeRecord>& got, const std::vector<VolumeRecord>& expected) {
+    ASSERT_EQ(got.size(), expected.size());
+    auto bits = [](const auto& v) { return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof v[0]); };
+    for (size_t i = 0; i < got.size(); ++i) {
+        const VolumeRecord &a = got[i], &b = expected[i];
+        EXPECT_TRUE(sameBits(a.point, b.point)) << i;
+        EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof a.time), 0) << i;
+        EXPECT_EQ(std::memcmp(&a.radius, &b.radius, sizeof a.radius), 0) << i;
+        EXPECT_EQ(a.level, b.level) << i;
+        EXPECT_EQ(bits(a.values), bits(b.values)) << i;
+        EXPECT_EQ(bits(a.peakRays), bits(b.peakRays)) << i;
+        EXPECT_EQ(bits(a.peakFlux), bits(b.peakFlux)) << i;
+    }
+}
+
 std::string contents(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
@@ -104,6 +134,58 @@ TEST_F(CacheFileTest, RecordsComeBackBitExact) {
     CacheFile(single, {"s", "o", 1}).append({record(2.5, 1)});
     expectSame(CacheFile(single, {"s", "o", 1}).readNew(), {record(2.5, 1)});
     fs::remove(single);
+}
+
+// Volume records (blocks of their own, their sizes varying with their peaks) come back bit-exact, in their
+// order, beside surface records.
+TEST_F(CacheFileTest, VolumeRecordsComeBackBitExactBesideSurfaceRecords) {
+    std::vector<VolumeRecord> first{volumeRecord(0.5, 0), volumeRecord(1.5, 3)}, second{volumeRecord(2.5, 32)};
+    {
+        CacheFile file(path_, kIdentity);
+        file.append(records(0, 2));
+        file.append(first);
+        file.append(records(2, 1));
+        file.append(second);
+    }
+    CacheFile file(path_, kIdentity);
+    expectSame(file.readNewVolumes(), {first[0], first[1], second[0]});
+    expectSame(file.readNew(), records(0, 3));
+}
+
+// A volume record whose peaks would reach past its block, or with a direction that is no unit vector, is a
+// damaged file (checksums matching: a faulty writer), reported at the record; such records are never written.
+TEST_F(CacheFileTest, AVolumeRecordThatDoesNotFitOrIsInvalidIsCorruption) {
+    writeBlocks({1});
+    size_t volumes = fs::file_size(path_);
+    CacheFile(path_, kIdentity).append(std::vector<VolumeRecord>{volumeRecord(0, 2)});
+    const std::string whole = contents(path_);
+    auto plant = [&](size_t at, const void* value, size_t size) {
+        std::string bytes = whole;
+        std::memcpy(bytes.data() + at, value, size);
+        char* head = bytes.data() + volumes;
+        auto crc = [](const char* data, size_t n) { return uint32_t(crc32(0, (const Bytef*)data, uInt(n))); };
+        uint32_t recordsCrc = crc(head + kHeadSize, bytes.size() - volumes - kHeadSize), headCrc;
+        std::memcpy(head + 8, &recordsCrc, 4);
+        headCrc = crc(head, 12);
+        std::memcpy(head + 12, &headCrc, 4);
+        overwrite(path_, bytes);
+        return errorOf([&] { CacheFile(path_, kIdentity).readNewVolumes(); });
+    };
+    const size_t record = volumes + kHeadSize, peaksAt = record + 4 * 8 + 4 + 4;
+    int32_t tooMany = 3;
+    std::string e = plant(peaksAt, &tooMany, 4);
+    EXPECT_EQ(e.find(path_ + ": byte " + std::to_string(record) + ": damaged cache block (a volume record does not fit"), 0u)
+        << e;
+    float longer = 2;
+    e = plant(peaksAt + 4 + VolumeRecord::kFields * kShCount * 3 * 4, &longer, 4);
+    EXPECT_NE(e.find("invalid volume record: a peak's direction or distance is invalid"), std::string::npos) << e;
+
+    CacheFile file(path_, kIdentity);
+    VolumeRecord nan = volumeRecord(1, 1), skewed = volumeRecord(2, 1), mono = volumeRecord(3, 1, 1);
+    nan.peakFlux[1] = std::nanf("");
+    skewed.peakRays[0].x += 0.5f;
+    for (const VolumeRecord& r : {nan, skewed, mono})
+        EXPECT_THROW(file.append(std::vector<VolumeRecord>{volumeRecord(0, 0), r}), std::invalid_argument);
 }
 
 TEST_F(CacheFileTest, NewFileStartsWithItsHeader) {
@@ -321,6 +403,7 @@ TEST_F(CacheFileTest, ThreadsWithAFileObjectEachLoseAndInterleaveNothing) {
 // another exception or a NaN.
 TEST_F(CacheFileTest, DamagedFilesLoadOrFailCleanly) {
     writeBlocks({2, 1, 4});
+    CacheFile(path_, kIdentity).append(std::vector<VolumeRecord>{volumeRecord(0, 1), volumeRecord(1, 4)});
     const std::string whole = contents(path_);
     std::mt19937 random(7);
     auto below = [&](size_t n) { return size_t(random() % n); };
@@ -344,6 +427,8 @@ TEST_F(CacheFileTest, DamagedFilesLoadOrFailCleanly) {
             CacheFile file(path_, kIdentity);
             for (const SurfaceRecord& r : file.readNew())
                 ASSERT_TRUE(std::isfinite(r.point.x) && r.radius[0] > 0 && r.values.size() == 15u);
+            for (const VolumeRecord& r : file.readNewVolumes())
+                ASSERT_TRUE(std::isfinite(r.point.x) && r.radius > 0 && r.peakFlux.size() == 3u * r.peaks());
             file.append(records(100, 1));
             CacheFile(path_, kIdentity).readNew();
             ++loaded;

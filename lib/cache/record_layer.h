@@ -118,7 +118,7 @@ public:
     const std::vector<Record>& records() const { return records_; }
     size_t memoryBytes() const {
         size_t bytes = records_.capacity() * sizeof(Record) + regions_.size() * (sizeof(Region) + 64);
-        for (const Record& r : records_) bytes += r.values.capacity() * sizeof(float);
+        for (const Record& r : records_) bytes += r.heapBytes();
         return bytes;
     }
 

@@ -29,6 +29,7 @@ struct SurfaceRecord {
     enum Field { kIrradiance, kAlongK1, kAlongK2, kTiltK1, kTiltK2 };
 
     int channels() const { return int(values.size()) / kFields; }
+    size_t heapBytes() const { return values.capacity() * sizeof(float); }
     dvec3 axis2() const { return glm::cross(normal, axis); }
     float value(Field f, int channel) const { return values[size_t(f) * channels() + channel]; }
     Spectrum field(Field f) const {

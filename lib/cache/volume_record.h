@@ -1,9 +1,13 @@
 // One record of the volume irradiance cache: the indirect light arriving from every direction at a point in
 // a medium at one instant, as the coefficients of real spherical harmonics up to order 2 per channel (enough
-// for the shape a Henyey–Greenstein phase function sees of it: the lobe keeps g^l of order l), how they
-// change as the point moves (per metre along x, y and z), and the sphere about the point where it stands
-// for its neighbours.
+// for the shape a Henyey–Greenstein phase function sees of smooth light: the lobe keeps g^l of order l), how
+// they change as the point moves (per metre along x, y and z), and the sphere about the point where it stands
+// for its neighbours. Light far brighter than the rest from a few directions (the glow a lamp makes in the
+// medium around it) is kept apart as peaks, single samples the phase function weighs exactly: order 2 cannot
+// hold a narrow peak (under HG .6 it would scatter 0.37 in place of 0.80 sr⁻¹ of it forward, 0.08 in place of
+// 0.012 backward).
 #pragma once
+#include <numbers>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -21,15 +25,28 @@ struct VolumeRecord {
     // values[((field × 9) + k) × channels + c]: field 0 the coefficient of Y_k in channel c, fields 1–3 its
     // gradient along x, y, z.
     std::vector<float> values;
+    // Per peak: the direction its light came from and the inverse of the distance its ray went (0: no
+    // surface), and peakFlux[peak × channels + c], its radiance above the harmonics' share times its solid angle.
+    std::vector<glm::vec4> peakRays;
+    std::vector<float> peakFlux;
 
     static constexpr int kFields = 4;
 
     int channels() const { return int(values.size()) / (kFields * kShCount); }
+    int peaks() const { return int(peakRays.size()); }
+    size_t heapBytes() const {
+        return (values.capacity() + peakFlux.capacity()) * sizeof(float) + peakRays.capacity() * sizeof(glm::vec4);
+    }
     float value(int field, int k, int channel) const { return values[(size_t(field) * kShCount + k) * channels() + channel]; }
+    float flux(int peak, int channel) const { return peakFlux[size_t(peak) * channels() + channel]; }
     // The mean radiance arriving over the sphere (the fluence over 4π) at the record's point, per channel.
     Spectrum meanRadiance() const {
         Spectrum s(0.f, channels());
-        for (int c = 0; c < channels(); ++c) s[c] = value(0, 0, c) * float(kShY0);
+        for (int c = 0; c < channels(); ++c) {
+            double sum = value(0, 0, c) * kShY0;
+            for (int i = 0; i < peaks(); ++i) sum += flux(i, c) / (4 * std::numbers::pi);
+            s[c] = float(sum);
+        }
         return s;
     }
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace brume {
 
@@ -38,6 +40,30 @@ double zoneRadius(const SphereSamples& s, const RecordShape& shape, double neare
     return std::isfinite(r) && r > 0 ? r : eps * shape.minRadius;
 }
 
+// The share of each sample's light kept as a peak: of those brighter than twice the median sample (the
+// background: a peak's own samples would raise a mean), their excess over that level (the level stays in the
+// harmonics, which then see a plateau, not a hole: cutting whole samples out of a bump would leave a notch
+// order 2 cannot hold either), for the kMaxPeaks largest excesses; 0 for the others. Where most samples are
+// dark (a median of 0), the level is the mean.
+std::vector<double> peakShares(const SphereSamples& s) {
+    constexpr size_t kMaxPeaks = 32;
+    std::vector<float> b(s.count());
+    double mean = 0;
+    for (int i = 0; i < s.count(); ++i) mean += (b[i] = s.brightness(i)) / s.count();
+    std::nth_element(b.begin(), b.begin() + b.size() / 2, b.end());
+    const double level = b[b.size() / 2] > 0 ? 2.0 * b[b.size() / 2] : mean;
+    std::vector<std::pair<double, int>> above;
+    for (int i = 0; i < s.count(); ++i)
+        if (s.brightness(i) > level && level > 0) above.push_back({s.brightness(i) - level, i});
+    std::sort(above.begin(), above.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    above.resize(std::min(above.size(), kMaxPeaks));
+    std::vector<double> share(s.count(), 0.0);
+    for (const auto& [excess, i] : above) share[i] = excess / s.brightness(i);
+    return share;
+}
+
 }  // namespace
 
 VolumeRecord buildVolumeRecord(const SphereSamples& s, const RecordShape& shape, int level, double nearestSource) {
@@ -49,13 +75,17 @@ VolumeRecord buildVolumeRecord(const SphereSamples& s, const RecordShape& shape,
     r.values.assign(size_t(VolumeRecord::kFields) * kShCount * ch, 0.f);
     std::vector<double> sum(r.values.size(), 0.0);
     auto at = [&](int field, int k, int c) -> double& { return sum[(size_t(field) * kShCount + k) * ch + c]; };
+    const std::vector<double> peak = peakShares(s);
     for (int i = 0; i < s.count(); ++i) {
         const dvec3& dir = s.direction(i);
         auto y = shBasis(dir);
         double d = s.distance(i);
         dvec3 toward = std::isfinite(d) ? 2 / d * dir : dvec3(0);
+        if (peak[i] > 0) r.peakRays.push_back(glm::vec4(glm::vec3(dir), std::isfinite(d) ? float(1 / d) : 0.f));
         for (int c = 0; c < ch; ++c) {
             double l = s.solidAngle() * s.radiance(i, c);
+            if (peak[i] > 0) r.peakFlux.push_back(float(peak[i] * l));
+            l *= 1 - peak[i];
             for (int k = 0; k < kShCount; ++k) {
                 double lk = l * y[k];
                 at(0, k, c) += lk;

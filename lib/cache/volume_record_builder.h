@@ -1,5 +1,5 @@
 // Volume records from sphere samples: the spherical-harmonic coefficients of the light arriving at the point,
-// their gradients, and the zone.
+// the peaks kept apart from them, their gradients, and the zone.
 #pragma once
 #include <limits>
 
@@ -9,7 +9,8 @@
 
 namespace brume {
 
-// The record of the indirect light arriving at the samples' point, made for bounce `level`. Each sample is
+// The record of the indirect light arriving at the samples' point, made for bounce `level`: the excess of the
+// (at most 32) brightest samples over twice the median sample as peaks, the rest as harmonics. Each sample is
 // an equivalent point source where its ray met a surface (Jarosz et al. 2008's gradients for volume radiance
 // caching take the same view): moving the point by δ changes its light by 2 ω·δ / d of itself, which gives the
 // gradients (none from samples that met nothing). Adaptive zones size the second-order change the same

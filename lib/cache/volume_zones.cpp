@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace brume {
 
@@ -25,6 +26,12 @@ double coefficientAt(const VolumeRecord& r, const dvec3& delta, double share, in
     return r.value(0, k, c) + share * change(r, delta, k, c);
 }
 
+// A peak's light at the record's point moved by delta, relative to its own: as of an equivalent point source
+// where its ray met a surface, to first order 1 + 2 ω·δ/d, kept between 0 and 2 as the harmonics' mean is.
+double peakChange(const glm::vec4& ray, const dvec3& delta) {
+    return 1 + std::clamp(2 * glm::dot(dvec3(ray), delta) * ray.w, -1.0, 1.0);
+}
+
 }  // namespace
 
 double VolumeZones::weigh(const VolumeRecord& r, const Receiver& at, Spectrum* value) const {
@@ -37,12 +44,16 @@ double VolumeZones::weigh(const VolumeRecord& r, const Receiver& at, Spectrum* v
         *value = Spectrum(0.f, ch);
         for (int c = 0; c < ch; ++c)
             (*value)[c] = float(std::max(0.0, coefficientAt(r, delta, extrapolation(r, delta, c), 0, c)) * kShY0);
+        for (int i = 0; i < r.peaks(); ++i) {
+            double f = peakChange(r.peakRays[i], delta) / (4 * std::numbers::pi);
+            for (int c = 0; c < ch; ++c) (*value)[c] += float(r.flux(i, c) * f);
+        }
     }
     return w;
 }
 
-Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const std::array<double, kShCount>& y,
-                                const PhaseMixture& phase) {
+Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const dvec3& dir,
+                                const std::array<double, kShCount>& y, const PhaseMixture& phase) {
     const int ch = r.channels();
     const dvec3 delta = p - r.point;
     // Per channel, the sums of c_k Y_k(dir) of each order.
@@ -53,8 +64,16 @@ Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const std
     }
     Spectrum out(0.f, ch);
     phase.forEachLobe([&](const Spectrum& coefficient, double g) {
+        Spectrum lobe(0.f, ch);
         for (int c = 0; c < ch; ++c)
-            out[c] += coefficient[c] * std::max(0.f, order[0][c] + float(g) * (order[1][c] + float(g) * order[2][c]));
+            lobe[c] = std::max(0.f, order[0][c] + float(g) * (order[1][c] + float(g) * order[2][c]));
+        HenyeyGreenstein hg(g);
+        for (int i = 0; i < r.peaks(); ++i) {
+            const glm::vec4& ray = r.peakRays[i];
+            double f = hg.value(glm::dot(dvec3(ray), dir)) * peakChange(ray, delta);
+            for (int c = 0; c < ch; ++c) lobe[c] += float(r.flux(i, c) * f);
+        }
+        out += coefficient * lobe;
     });
     return out;
 }

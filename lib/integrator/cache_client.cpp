@@ -28,7 +28,7 @@ bool CacheClient::inScattered(const Receiver& at, const dvec3& dir, const PhaseM
     Spectrum sum(0.f);
     const auto basis = shBasis(dir);
     double total = volumes_->gather(at, [&](const VolumeRecord& r, double w) {
-        sum += VolumeZones::scattered(r, at.point, basis, phase) * float(w);
+        sum += VolumeZones::scattered(r, at.point, dir, basis, phase) * float(w);
     });
     if (total > 0) {
         value = sum * float(1 / total);

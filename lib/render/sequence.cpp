@@ -29,16 +29,14 @@ std::unique_ptr<VolumeCache> makeVolumeCache(const RenderScene& scene, const Ren
 }
 
 std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings, SurfaceCache* cache,
-                                               const VolumeCache* volumes) {
+                                               VolumeCache* volumes) {
     if (settings.cacheFile.empty()) return nullptr;
     if (!cache) {
         warn("-af " + settings.cacheFile + " ignored: there is no irradiance cache without -ab > 0 and -aa > 0");
         return nullptr;
     }
-    if (volumes)
-        warn("-af " + settings.cacheFile + " keeps surface records only: records in media are made afresh each run");
     CacheIdentity identity{sceneContentHash(scene), cacheOptions(settings), Spectrum::defaultChannels()};
-    return std::make_unique<PersistentCache>(settings.cacheFile, identity, *cache);
+    return std::make_unique<PersistentCache>(settings.cacheFile, identity, *cache, volumes);
 }
 
 }  // namespace
