@@ -2,7 +2,7 @@
 # Brume demo (make demo): illuminance on the work plane of the example office, computed by rtrace, and a
 # picture of the office rendered by rpict; an exit sign seen through a fire's soot; a room lit by a fire.
 # Usage: bash examples/demo.sh BIN_DIR   (BIN_DIR holds Brume's programs; make demo passes build/bin)
-# The pictures (office.hdr, corridor.hdr, flame.hdr) and the flame's grids go to BIN_DIR/../demo/.
+# The pictures (office.hdr, corridor.hdr, corridor_ab2.hdr, flame.hdr) and the flame's grids go to BIN_DIR/../demo/.
 set -euo pipefail
 bin=${1:-build/bin}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -98,6 +98,15 @@ awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" -v p="$picture" \
 # sampled); the contrast C = (L_sign − L_wall)/L_wall. Without the shared data, a homogeneous medium of
 # soot's extinction stands in for the smoke.
 corridor=$here/corridor
+timed() {  # timed PICTURE COMMAND...: runs the command, then says how long it took and where the picture is
+    local picture=$1 start end
+    shift
+    start=$(date +%s%N)
+    "$@"
+    end=$(date +%s%N)
+    awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" -v p="$picture" \
+      'BEGIN { printf "rpict run time: %.2f s on %d threads\nPicture: %s\n", t / 1000, n, p }'
+}
 soot=$here/../../shared/data/vdb/fds_room_fire_mesh2_soot
 if [ -d "$soot" ]; then
     smoke=("$corridor/smoke.rad"); export RAYPATH="$soot:${RAYPATH:-.:/usr/local/lib/ray}"
@@ -137,11 +146,18 @@ copts=(-x 240 -y 180 -ab 0 -ms .05 -n "$threads")
 ctime=(); [ ${#smoke[@]} -gt 0 ] && ctime=(-T 120)
 echo
 echo "  rpict ${copts[*]} ${ctime[*]} ${cview[*]} -o corridor.hdr corridor.rad smoke.rad"
-start=$(date +%s%N)
-"$bin/rpict" "${copts[@]}" "${ctime[@]}" "${medium[@]}" "${cview[@]}" -o "$picture" "$corridor/corridor.rad" "${smoke[@]}"
-end=$(date +%s%N)
-awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" -v p="$picture" \
-  'BEGIN { printf "rpict run time: %.2f s on %d threads\nPicture: %s\n", t / 1000, n, p }'
+timed "$picture" "$bin/rpict" "${copts[@]}" "${ctime[@]}" "${medium[@]}" "${cview[@]}" -o "$picture" \
+    "$corridor/corridor.rad" "${smoke[@]}"
+
+# The same view with two bounces of the light the walls and the smoke scatter, from the irradiance caches
+# (surface and volume records: rtrace(1), "The volume cache"), 120 x 90: every bounce's light in the smoke.
+picture2=$out/corridor_ab2.hdr
+rm -f "$picture2"
+copts2=(-x 120 -y 90 -ab 2 -ms .05 -n "$threads")
+echo
+echo "  rpict ${copts2[*]} ${ctime[*]} ${cview[*]} -o corridor_ab2.hdr corridor.rad smoke.rad"
+timed "$picture2" "$bin/rpict" "${copts2[@]}" "${ctime[@]}" "${medium[@]}" "${cview[@]}" -o "$picture2" \
+    "$corridor/corridor.rad" "${smoke[@]}"
 
 # Flames as light sources: a dark 5 m x 4 m x 2.7 m room lit only by a small fire on its floor
 # (examples/flame: make_flame writes the plume's soot and temperature grids, an analytic cone 1.2 m tall at
@@ -172,8 +188,4 @@ rm -f "$picture"
 fview=(-vp -2.3 -1.8 1.5 -vd 1 0.85 -0.35 -vh 80 -vv 62)
 popts=(-x 240 -y 180 -ab 0 -n "$threads")
 echo "  rpict ${popts[*]} ${fview[*]} -o flame.hdr room.rad"
-start=$(date +%s%N)
-RAYPATH="$out:${RAYPATH:-.}" "$bin/rpict" "${popts[@]}" "${fview[@]}" -o "$picture" "$room"
-end=$(date +%s%N)
-awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" -v p="$picture" \
-  'BEGIN { printf "rpict run time: %.2f s on %d threads\nPicture: %s\n", t / 1000, n, p }'
+RAYPATH="$out:${RAYPATH:-.}" timed "$picture" "$bin/rpict" "${popts[@]}" "${fview[@]}" -o "$picture" "$room"
