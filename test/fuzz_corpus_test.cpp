@@ -127,4 +127,11 @@ TEST(FuzzCorpus, CacheFilesLoadOrAreRefusedCleanly) {
     setWarningsEnabled(false);  // torn blocks are dropped with a warning
     for (const std::string& input : corpus("corpus_cache")) EXPECT_TRUE(exerciseCacheFile(input));
     setWarningsEnabled(true);
+    // The seeds with volume blocks are whole: the fuzzer starts from files that load volume records (a copy:
+    // a cache file is opened for appending).
+    fs::path seed = fs::path(BRUME_TEST_DATA) / ".." / "fuzz" / "corpus_cache" / "volume_block";
+    fs::path copy = fs::temp_directory_path() / ("brume_volume_seed_" + std::to_string(getpid()));
+    fs::copy_file(seed, copy, fs::copy_options::overwrite_existing);
+    EXPECT_EQ(CacheFile(copy.string(), CacheIdentity{"fuzz", "fuzz", 3}).readNewVolumes().size(), 2u);
+    fs::remove(copy);
 }

@@ -1,5 +1,6 @@
 // What the cache-file fuzzer and the corpus replay do with an input: the bytes as an irradiance cache
-// file (made for the scene and options "fuzz", 3 channels), loaded; every record it yields must be valid.
+// file (made for the scene and options "fuzz", 3 channels), loaded; every record it yields (surface and
+// volume records) must be valid.
 #pragma once
 #include <unistd.h>
 
@@ -25,6 +26,13 @@ inline bool exerciseCacheFile(std::string_view bytes) {
             valid = valid && r.channels() == 3 && r.radius[0] > 0 && r.radius[1] > 0 && r.level >= 0 &&
                     std::abs(glm::length(r.normal) - 1) < 1e-3;
             for (float v : r.values) valid = valid && std::isfinite(v);
+        }
+        for (const VolumeRecord& r : file.readNewVolumes()) {
+            valid = valid && r.channels() == 3 && r.radius > 0 && r.level >= 0 &&
+                    r.peakFlux.size() == size_t(3 * r.peaks());
+            for (const glm::vec4& ray : r.peakRays) valid = valid && std::abs(glm::length(glm::vec3(ray)) - 1) < 1e-3f;
+            for (float v : r.values) valid = valid && std::isfinite(v);
+            for (float v : r.peakFlux) valid = valid && std::isfinite(v);
         }
     } catch (const Error&) {
     }
