@@ -64,17 +64,15 @@ Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const dve
     }
     Spectrum out(0.f, ch);
     phase.forEachLobe([&](const Spectrum& coefficient, double g) {
-        Spectrum lobe(0.f, ch);
         for (int c = 0; c < ch; ++c)
-            lobe[c] = std::max(0.f, order[0][c] + float(g) * (order[1][c] + float(g) * order[2][c]));
-        HenyeyGreenstein hg(g);
-        for (int i = 0; i < r.peaks(); ++i) {
-            const glm::vec4& ray = r.peakRays[i];
-            double f = hg.value(glm::dot(dvec3(ray), dir)) * peakChange(ray, delta);
-            for (int c = 0; c < ch; ++c) lobe[c] += float(r.flux(i, c) * f);
-        }
-        out += coefficient * lobe;
+            out[c] += coefficient[c] * std::max(0.f, order[0][c] + float(g) * (order[1][c] + float(g) * order[2][c]));
     });
+    for (int i = 0; i < r.peaks(); ++i) {
+        const glm::vec4& ray = r.peakRays[i];
+        Spectrum response = phase.response(dir, dvec3(ray));
+        double change = peakChange(ray, delta);
+        for (int c = 0; c < ch; ++c) out[c] += float(response[c] * r.flux(i, c) * change);
+    }
     return out;
 }
 
