@@ -1,7 +1,8 @@
-// What a record's rays saw, one ray per stratum of a grid of rows × columns: per ray its direction, its
-// radiance, and how far it went before a surface (infinite: none). HemisphereSamples and SphereSamples lay
-// the strata out over directions.
+// What a record's rays saw, one ray per stratum of a grid of rows × columns in each of one or more passes: per
+// ray its direction, its radiance, and how far it went before a surface (infinite: none). HemisphereSamples
+// and SphereSamples lay the strata out over directions; every sample stands for the same share of them.
 #pragma once
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -15,9 +16,20 @@ class RaySamples {
 public:
     int rows() const { return rows_; }
     int columns() const { return columns_; }
-    int count() const { return rows_ * columns_; }
-    int cell(int row, int column) const { return row * columns_ + column; }
+    int strata() const { return rows_ * columns_; }
+    int passes() const { return passes_; }
+    int count() const { return strata() * passes_; }
+    int cell(int row, int column, int pass = 0) const { return (pass * rows_ + row) * columns_ + column; }
     int channels() const { return channels_; }
+
+    // Room for one more ray per stratum; returns the new pass's index.
+    int addPass() {
+        ++passes_;
+        radiance_.resize(size_t(count()) * channels_, 0.f);
+        distance_.resize(size_t(count()), std::numeric_limits<double>::infinity());
+        direction_.resize(size_t(count()), glm::dvec3(0));
+        return passes_ - 1;
+    }
 
     void set(int index, const glm::dvec3& dir, const Spectrum& radiance, double distance) {
         direction_[index] = dir;
@@ -36,6 +48,29 @@ public:
     }
     const glm::dvec3& direction(int index) const { return direction_[index]; }
 
+    double meanBrightness() const {
+        double sum = 0;
+        for (int i = 0; i < count(); ++i) sum += brightness(i);
+        return sum / count();
+    }
+    // The standard error of the samples' mean brightness, estimated from the differences of neighbouring
+    // strata (columns 2m and 2m + 1 of a row, in each pass): for one ray per stratum, E[(x_a − x_b)²] is their
+    // variances' sum plus the square of their means' difference, so the estimate errs high where the light
+    // itself changes from stratum to stratum, never low.
+    double meanStandardError() const {
+        double squares = 0;
+        int pairs = 0;
+        for (int p = 0; p < passes_; ++p)
+            for (int j = 0; j < rows_; ++j)
+                for (int k = 0; k + 1 < columns_; k += 2, ++pairs) {
+                    double d = brightness(cell(j, k, p)) - brightness(cell(j, k + 1, p));
+                    squares += d * d;
+                }
+        // Each pair's squared difference estimates the variance of its two samples; the sum over all
+        // strata, scaled to the unpaired ones, that of the samples' sum.
+        return pairs > 0 ? std::sqrt(squares * count() / (2.0 * pairs)) / count() : 0.0;
+    }
+
 protected:
     RaySamples(int rows, int columns, int channels) : rows_(rows), columns_(columns), channels_(channels) {
         radiance_.assign(size_t(count()) * channels_, 0.f);
@@ -45,6 +80,7 @@ protected:
 
 private:
     int rows_, columns_, channels_;
+    int passes_ = 1;
     std::vector<float> radiance_;
     std::vector<double> distance_;
     std::vector<glm::dvec3> direction_;

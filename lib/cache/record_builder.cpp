@@ -49,28 +49,32 @@ Measured measure(const HemisphereSamples& hs) {
             m.along[c].x += e * toward.x * perDistance, m.along[c].y += e * toward.y * perDistance;
         }
     }
+    // Each pass's strata give the gradient again; their mean is the record's.
     auto nearer = [&](int a, int b) { return std::min(hs.distance(a), hs.distance(b)); };
-    for (int k = 0; k < cols; ++k) {
-        double phiMid = kPi * (2 * k + 1) / cols, phiEdge = hs.phiEdge(k);
-        Tangent u{std::cos(phiMid), std::sin(phiMid)}, v{-std::sin(phiEdge), std::cos(phiEdge)};
-        int previous = (k + cols - 1) % cols;
-        for (int j = 0; j < rows; ++j) {
-            int here = hs.cell(j, k);
-            // The wall between rows j-1 and j moves as the point does (its nearer side decides how fast).
-            double rowWall = 0, columnWall = 0;
-            if (j > 0) {
-                double sin2 = hs.sin2Edge(j);
-                rowWall = 2 * kPi / cols * std::sqrt(sin2) * (1 - sin2) / nearer(here, hs.cell(j - 1, k));
-            }
-            columnWall = (std::sqrt(hs.sin2Edge(j + 1)) - std::sqrt(hs.sin2Edge(j))) / nearer(here, hs.cell(j, previous));
-            for (int c = 0; c < ch; ++c) {
-                double l = hs.radiance(here, c);
+    const double perPass = 1.0 / hs.passes();
+    for (int p = 0; p < hs.passes(); ++p) {
+        for (int k = 0; k < cols; ++k) {
+            double phiMid = kPi * (2 * k + 1) / cols, phiEdge = hs.phiEdge(k);
+            Tangent u{std::cos(phiMid), std::sin(phiMid)}, v{-std::sin(phiEdge), std::cos(phiEdge)};
+            int previous = (k + cols - 1) % cols;
+            for (int j = 0; j < rows; ++j) {
+                int here = hs.cell(j, k, p), below = hs.cell(std::max(j - 1, 0), k, p), beside = hs.cell(j, previous, p);
+                // The wall between rows j-1 and j moves as the point does (its nearer side decides how fast).
+                double rowWall = 0, columnWall = 0;
                 if (j > 0) {
-                    double dl = rowWall * (l - hs.radiance(hs.cell(j - 1, k), c));
-                    m.along[c].x += u.x * dl, m.along[c].y += u.y * dl;
+                    double sin2 = hs.sin2Edge(j);
+                    rowWall = perPass * 2 * kPi / cols * std::sqrt(sin2) * (1 - sin2) / nearer(here, below);
                 }
-                double dl = columnWall * (l - hs.radiance(hs.cell(j, previous), c));
-                m.along[c].x += v.x * dl, m.along[c].y += v.y * dl;
+                columnWall = perPass * (std::sqrt(hs.sin2Edge(j + 1)) - std::sqrt(hs.sin2Edge(j))) / nearer(here, beside);
+                for (int c = 0; c < ch; ++c) {
+                    double l = hs.radiance(here, c);
+                    if (j > 0) {
+                        double dl = rowWall * (l - hs.radiance(below, c));
+                        m.along[c].x += u.x * dl, m.along[c].y += u.y * dl;
+                    }
+                    double dl = columnWall * (l - hs.radiance(beside, c));
+                    m.along[c].x += v.x * dl, m.along[c].y += v.y * dl;
+                }
             }
         }
     }

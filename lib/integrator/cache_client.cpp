@@ -1,7 +1,10 @@
 #include "integrator/cache_client.h"
 
+#include <numbers>
+
 #include "cache/hemisphere_samples.h"
 #include "cache/record_builder.h"
+#include "cache/sample_passes.h"
 #include "cache/sphere_samples.h"
 #include "cache/volume_record_builder.h"
 
@@ -63,6 +66,27 @@ double CacheClient::nearestSource(const dvec3& p) const {
     return nearest;
 }
 
+int CacheClient::passesFor(const HemisphereSamples& first, double known, int level) const {
+    if (level > 0) return 1;
+    double light = first.meanBrightness() + known;
+    return light > 0 ? samplePasses(first.meanStandardError() / light, kNoiseShare * settings_.ambientAccuracy) : 1;
+}
+
+template <class Samples>
+void CacheClient::tracePass(Samples& samples, int pass, const SurfaceId& leaving, const PathState& child,
+                            PathContext& ctx) const {
+    const dvec3& point = samples.point();
+    for (int j = 0; j < samples.rows(); ++j) {
+        for (int k = 0; k < samples.columns(); ++k) {
+            dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());
+            RayRecord hit;
+            Spectrum l = tracer_.radiance(Ray{point, dir, std::numeric_limits<double>::infinity(), leaving}, child,
+                                          ctx, nullptr, &hit);
+            samples.set(samples.cell(j, k, pass), dir, l.clampFinite(), hit.firstLength);
+        }
+    }
+}
+
 SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
@@ -70,20 +94,22 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
     HemisphereSamples samples(point, *q.at.normal, recordDivisions(q), Spectrum::defaultChannels());
     PathState child = recordRays(q, scratch);
     bool aims = portals_.active();
-    aimingFrom(child, point, *q.at.normal, samples.count(), aims);
-    for (int j = 0; j < samples.rows(); ++j) {
-        for (int k = 0; k < samples.columns(); ++k) {
-            dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());
-            RayRecord hit;
-            Spectrum l = tracer_.radiance(Ray{point, dir, std::numeric_limits<double>::infinity(), q.leaving}, child,
-                                          ctx, nullptr, &hit);
-            samples.set(samples.cell(j, k), dir, l.clampFinite(), hit.firstLength);
-        }
-    }
-    if (aims) {
-        portals_.sample(point, *q.at.normal, q.leaving, samples.count(), child, ctx, &samples.aimed());
-        patches_.sample(point, *q.at.normal, q.leaving, samples.count(), child, ctx, &samples.aimed());
-    }
+    aimingFrom(child, point, *q.at.normal, samples.strata(), aims);
+    // Each pass aims as many samples as its strata ask for; the record takes their mean.
+    std::vector<AimedSample> aimed;
+    auto pass = [&](int p) {
+        tracePass(samples, p, q.leaving, child, ctx);
+        if (!aims) return;
+        portals_.sample(point, *q.at.normal, q.leaving, samples.strata(), child, ctx, &aimed);
+        patches_.sample(point, *q.at.normal, q.leaving, samples.strata(), child, ctx, &aimed);
+    };
+    pass(0);
+    double aimedIrradiance = 0;
+    for (const AimedSample& a : aimed) aimedIrradiance += brightness(a.irradiance);
+    int passes = passesFor(samples, aimedIrradiance / std::numbers::pi, q.at.level);
+    for (int p = 1; p < passes; ++p) pass(samples.addPass());
+    for (AimedSample& a : aimed) a.irradiance *= float(1.0 / passes);
+    samples.aimed() = std::move(aimed);
     SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
     record.time = q.at.time;
     return record;
@@ -92,20 +118,11 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
 VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
-    const dvec3& point = q.at.point;
-    SphereSamples samples(point, recordDivisions(q), Spectrum::defaultChannels());
+    SphereSamples samples(q.at.point, recordDivisions(q), Spectrum::defaultChannels());
     PathState child = recordRays(q, scratch);
-    aimingFrom(child, point, dvec3(0), samples.count(), false);
-    for (int j = 0; j < samples.rows(); ++j) {
-        for (int k = 0; k < samples.columns(); ++k) {
-            dvec3 dir = samples.direction(j, k, ctx.rng.uniform(), ctx.rng.uniform());
-            RayRecord hit;
-            Spectrum l = tracer_.radiance(Ray{point, dir, std::numeric_limits<double>::infinity(), SurfaceId{}}, child,
-                                          ctx, nullptr, &hit);
-            samples.set(samples.cell(j, k), dir, l.clampFinite(), hit.firstLength);
-        }
-    }
-    VolumeRecord record = buildVolumeRecord(samples, volumes_->kind().shape(), q.at.level, nearestSource(point));
+    aimingFrom(child, q.at.point, dvec3(0), samples.strata(), false);
+    tracePass(samples, 0, SurfaceId{}, child, ctx);
+    VolumeRecord record = buildVolumeRecord(samples, volumes_->kind().shape(), q.at.level, nearestSource(q.at.point));
     record.time = q.at.time;
     return record;
 }

@@ -51,18 +51,37 @@ public:
     int missesToPay(const RecordRequest& request) const {
         return request.at.level == 0 ? 1 : std::max(1, recordDivisions(request));
     }
-    // A record: the radiance of stratified rays over the hemisphere, each continuing one bounce deeper (where
+    // A record: the radiance of stratified rays over the hemisphere (more passes of them where their standard
+    // error asks, see passesFor), each continuing one bounce deeper (where
     // the cache, or paths, give the light of further bounces), and as many samples aimed at the sky through
     // the windows and at the sun's patches (SkyPortals, SunPatches), which count in the record's gradients
     // and zone as equivalent point sources. Sources these rays meet are left out: records hold indirect
     // light, next-event estimation gives the direct. Their own misses go to `visit`.
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
     // A volume record: the radiance of rays stratified over the sphere, each continuing one bounce deeper, the
-    // sources they meet left out as a surface record's rays leave them.
+    // sources they meet left out as a surface record's rays leave them. One pass: the rays that look volume
+    // records up (view rays, record rays through a medium) gather many of them along their way, which
+    // averages their noise (more passes cost 3-6x in the corridor of make demo, for no smaller error).
     VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
 private:
     static constexpr int kMinDivisions = 16;
+    // The standard error a record's samples aim for, relative to its light, as a share of -aa: a record's
+    // noise is not an error its zone's neighbours average out, as every lookup in the zone shares it. 1.5 %
+    // at -aa .1: daylit rooms' records, 1-1.4 % at -ad 1024, seldom take a second pass (the office of
+    // bench/daylight.py 1.15x the time; at 0.1, 2.3x for 0.85 -> 0.63 % RMS), while those seeing through a
+    // white fog, 3-4 %, take four to eight.
+    static constexpr double kNoiseShare = 0.15;
+
+    // How many passes over its strata a surface record's rays make (samplePasses), from its `first` pass and
+    // the `known` brightness of samples aimed besides them. Only records for the first bounce take more than
+    // one: a deeper record's noise reaches an answer averaged over the many records a first-bounce record's
+    // rays meet.
+    int passesFor(const HemisphereSamples& first, double known, int level) const;
+    // One ray per stratum of `samples`' pass `pass`, leaving `leaving`.
+    template <class Samples>
+    void tracePass(Samples& samples, int pass, const SurfaceId& leaving, const PathState& child,
+                   PathContext& ctx) const;
 
     // The context and the first state of a record's rays, one bounce deeper than the request.
     PathContext recordContext(const RecordRequest& q, Scratch& scratch, CacheVisit& visit, RayOutputs& outputs) const;
