@@ -49,8 +49,8 @@ TEST(VolumeCache, AWhiteFogInAClosedSphereKeepsItsEnergy) {
 }
 
 // Run to run, sensors in a white fog: in the grey sphere (ρ 0.5) of albedo-1 fog, a sensor's record sees the
-// light of many-bounce paths through the fog along its rays, so that its 1024 rays make a record some 2 %
-// noisy (its neighbouring strata say); such records take more passes (CacheClient::passesFor: two to eight). Two runs of 24 wall sensors
+// light of many-bounce paths through the fog along its rays, so that its 1024 rays make a record some 3 %
+// noisy; such records take more passes (CacheClient::passesFor: four or more). Two runs of 24 wall sensors
 // with different seeds, at the defaults (-ab 8): their relative differences' RMS / √2 is a run's spread,
 // 2.65 % with one pass per record, 1.25 % with the passes (measured). The estimate's own relative error is
 // about 1/√48 ≈ 14 %: below 1.9 %, three of those above what the passes give and two below what one pass

@@ -60,9 +60,9 @@ public:
     // The standard error of the samples' mean brightness, estimated from neighbouring strata: in each row of
     // each pass, columns k, k + 1, k + 2 give d = x_{k+1} − (x_k + x_{k+2})/2, whose square is 3/2 of the
     // variance of one ray where the light's own change from stratum to stratum is linear. (Pairs' differences,
-    // x_k − x_{k+1}, count a lamp's glow across the strata as noise: 2.5x the error the triples find in the
-    // halo of bench/volume_cache.py, 1.7x in a fog's integrating sphere.) Errs high only by the light's
-    // curvature over three strata.
+    // x_k − x_{k+1}, count a lamp's glow across the strata as noise: 1.4x the error the triples find in the
+    // halo of bench/volume_cache.py, where both agree in a fog's integrating sphere.) Errs high only by the
+    // light's curvature over three strata.
     double meanStandardError() const {
         double squares = 0;
         int triples = 0;

@@ -68,8 +68,9 @@ private:
     static constexpr int kMinDivisions = 16;
     // The standard error a record's samples aim for, relative to its light, as a share of -aa: a record's
     // noise is not an error its zone's neighbours average out, as every lookup in the zone shares it. 1.5 %
-    // at -aa .1: at -ad 1024 daylit rooms' records seldom take a second pass, while those seeing through a
-    // white fog (about 1.7 %, up to 2 %) take two.
+    // at -aa .1: at -ad 1024 daylit rooms' records (1-1.4 %) take one or two passes, while those seeing
+    // through a white fog (about 3 %) take four, and those of a wall behind a lamp's halo in fog (about 5 %)
+    // eight.
     static constexpr double kNoiseShare = 0.15;
 
     // How many passes over its strata a surface record's rays make (samplePasses), from its `first` pass and
