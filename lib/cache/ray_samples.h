@@ -53,10 +53,6 @@ public:
         for (int i = 0; i < count(); ++i) sum += brightness(i);
         return sum / count();
     }
-    // The standard error of the samples' mean brightness, estimated from the differences of neighbouring
-    // strata (columns 2m and 2m + 1 of a row, in each pass): for one ray per stratum, E[(x_a − x_b)²] is their
-    // variances' sum plus the square of their means' difference, so the estimate errs high where the light
-    // itself changes from stratum to stratum, never low.
     // The standard error of the samples' mean brightness, estimated from neighbouring strata: in each row of
     // each pass, columns k, k + 1, k + 2 give d = x_{k+1} − (x_k + x_{k+2})/2, whose square is 3/2 of the
     // variance of one ray where the light's own change from stratum to stratum is linear. (Pairs' differences,

@@ -76,7 +76,7 @@ TEST(SamplePasses, AsManyAsBringTheErrorUnderTheTarget) {
 // bright paths (the first pass's error, and so the passes, follow its own mean): samples of 50 with
 // probability 1/50 (mean 1; a pass's relative error ≈ 22 %), a target of 12 %, so that 2 to 8 passes are
 // decided (4 on average). Over 4000 records the mean of their values is 1 within 4 standard errors of that
-// mean (≈ 0.2 %) plus the bias such a rule has, Cov(first pass, 1/passes) ≈ 1.4 % here (1.25 % measured): a
+// mean (≈ 0.2 %) plus the bias such a rule has, Cov(first pass, 1/passes) ≈ 1.4 % here (1.2 % measured): a
 // sixteenth of the error a single pass makes, where the passes halve that error.
 TEST(SamplePasses, DecidingOnceFromTheFirstPassKeepsTheMeanNearlyUnbiased) {
     Random rng(11);
