@@ -29,11 +29,12 @@ static_assert(std::endian::native == std::endian::little && std::numeric_limits<
 namespace {
 
 constexpr std::string_view kMagic = "#?BRUME_IRRADIANCE_CACHE";
-constexpr std::string_view kFormat = "brume_irradiance_cache 2";
+constexpr std::string_view kFormat = "brume_irradiance_cache 3";
 constexpr char kSurfaceTag[4] = {'S', 'U', 'R', 'F'};  // a block of surface records
 constexpr char kVolumeTag[4] = {'V', 'O', 'L', 'U'};   // a block of volume records
-// A volume record holds at most this many peaks (buildVolumeRecord keeps 32); more is a damaged file.
-constexpr int32_t kMaxPeaks = 1024;
+// A volume record holds at most this many peaks (buildVolumeRecord keeps 32, and up to 36 per source); more
+// is a damaged file.
+constexpr int32_t kMaxPeaks = 1 << 16;
 constexpr size_t kHeadSize = 16;
 // A header is a few hundred bytes; one without its empty line within this many is not a cache file's.
 constexpr size_t kMaxHeaderSize = 1 << 16;
@@ -138,6 +139,7 @@ const char* invalidity(const VolumeRecord& r, int channels) {
     if (r.values.size() != size_t(VolumeRecord::kFields) * kShCount * channels) return "wrong number of values";
     if (r.peakFlux.size() != r.peakRays.size() * channels) return "wrong number of peak values";
     if (r.peaks() > kMaxPeaks) return "too many peaks";
+    if (r.sourcePeaks < 0 || r.sourcePeaks > r.peaks()) return "its sources' peaks are not among its peaks";
     if (!finite(r.point)) return "a coordinate is not finite";
     if (!std::isfinite(r.time)) return "its time is not finite";
     if (!(r.radius > 0) || !std::isfinite(r.radius)) return "its radius is not positive";
@@ -189,8 +191,9 @@ SurfaceRecord getRecord(const char*& p, int channels) {
     return r;
 }
 
-// A volume record's point, instant, radius, level and number of peaks; then its values.
-constexpr size_t kVolumeRecordHead = 4 * sizeof(double) + sizeof(float) + 2 * sizeof(int32_t);
+// A volume record's point, instant, radius, level, number of peaks and of the sources' among them; then its
+// values.
+constexpr size_t kVolumeRecordHead = 4 * sizeof(double) + sizeof(float) + 3 * sizeof(int32_t);
 
 size_t volumeRecordSize(int peaks, int channels) {
     return kVolumeRecordHead +
@@ -203,6 +206,7 @@ void putRecord(char*& p, const VolumeRecord& r) {
     put(p, r.radius);
     put(p, int32_t(r.level));
     put(p, int32_t(r.peaks()));
+    put(p, int32_t(r.sourcePeaks));
     for (float v : r.values) put(p, v);
     for (const glm::vec4& ray : r.peakRays)
         for (int i = 0; i < 4; ++i) put(p, ray[i]);
@@ -218,6 +222,7 @@ std::optional<VolumeRecord> getVolumeRecord(const char*& p, const char* end, int
     r.radius = get<float>(p);
     r.level = get<int32_t>(p);
     int32_t peaks = get<int32_t>(p);
+    r.sourcePeaks = get<int32_t>(p);
     if (peaks < 0 || peaks > kMaxPeaks || size_t(end - p) < volumeRecordSize(peaks, channels) - kVolumeRecordHead)
         return std::nullopt;
     r.values.resize(size_t(VolumeRecord::kFields) * kShCount * channels);
@@ -337,6 +342,9 @@ void CacheFile::checkHeader() {
     };
     if (fields["FORMAT"] == "brume_irradiance_cache 1")
         refuse("was made by an earlier Brume (cache format 1, whose records have no instant)");
+    if (fields["FORMAT"] == "brume_irradiance_cache 2")
+        refuse("was made by an earlier Brume (cache format 2, whose volume records hold no light straight from the "
+               "sources)");
     if (fields["FORMAT"] != kFormat) refuse("has another format (FORMAT=" + shown(fields["FORMAT"]) + ")");
     if (fields["SCENE"] != identity_.scene)
         refuse("was made for another scene (its SCENE= differs: the scene or a file it reads has changed)");

@@ -3,7 +3,7 @@
 //
 // A text header, ended by an empty line:
 //     #?BRUME_IRRADIANCE_CACHE
-//     FORMAT=brume_irradiance_cache 2
+//     FORMAT=brume_irradiance_cache 3
 //     SCENE=<sceneContentHash>
 //     OPTIONS=<every option that changes cached values>
 //     CHANNELS=<spectrum channels per value>
@@ -13,9 +13,10 @@
 // double, the two radii as floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
 // numbers are little-endian IEEE 754, as in memory on x86 and ARM. Volume records ("VOLU", whose head
 // holds the records' size in bytes where a surface block's holds their count): point and instant as 4
-// doubles, the radius as a float, the level and the number of peaks P as 32-bit integers, CHANNELS × 36
-// floats of coefficients and gradients, then per peak 4 floats (direction, inverse distance), then P ×
-// CHANNELS floats of the peaks' light. Format 1 (records without an instant) is refused.
+// doubles, the radius as a float, the level, the number of peaks P and how many of the last are the sources'
+// as 32-bit integers, CHANNELS × 36 floats of coefficients and gradients, then per peak 4 floats (direction,
+// inverse distance), then P × CHANNELS floats of the peaks' light. Formats 1 (records without an instant) and
+// 2 (volume records without the sources' light) are refused.
 #pragma once
 #include <cstdint>
 #include <mutex>

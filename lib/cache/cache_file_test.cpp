@@ -73,6 +73,7 @@ VolumeRecord volumeRecord(double id, int peaks, int channels = 3) {
         r.peakRays.push_back(glm::vec4(glm::normalize(glm::vec3(std::sin(id + k), std::cos(id + k), 0.3f)), 1 / 3.f));
         for (int c = 0; c < channels; ++c) r.peakFlux.push_back(float(id + k) / 7 + float(c));
     }
+    r.sourcePeaks = peaks / 2;
     return r;
 }
 
@@ -85,6 +86,7 @@ void expectSame(const std::vector<VolumeRecord>& got, const std::vector<VolumeRe
         EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof a.time), 0) << i;
         EXPECT_EQ(std::memcmp(&a.radius, &b.radius, sizeof a.radius), 0) << i;
         EXPECT_EQ(a.level, b.level) << i;
+        EXPECT_EQ(a.sourcePeaks, b.sourcePeaks) << i;
         EXPECT_EQ(bits(a.values), bits(b.values)) << i;
         EXPECT_EQ(bits(a.peakRays), bits(b.peakRays)) << i;
         EXPECT_EQ(bits(a.peakFlux), bits(b.peakFlux)) << i;
@@ -177,8 +179,11 @@ TEST_F(CacheFileTest, AVolumeRecordThatDoesNotFitOrIsInvalidIsCorruption) {
     EXPECT_EQ(e.find(path_ + ": byte " + std::to_string(record) + ": damaged cache block (a volume record does not fit"), 0u)
         << e;
     float longer = 2;
-    e = plant(peaksAt + 4 + VolumeRecord::kFields * kShCount * 3 * 4, &longer, 4);
+    e = plant(peaksAt + 8 + VolumeRecord::kFields * kShCount * 3 * 4, &longer, 4);
     EXPECT_NE(e.find("invalid volume record: a peak's direction or distance is invalid"), std::string::npos) << e;
+    int32_t moreSources = 3;
+    e = plant(peaksAt + 4, &moreSources, 4);
+    EXPECT_NE(e.find("invalid volume record: its sources' peaks are not among its peaks"), std::string::npos) << e;
 
     CacheFile file(path_, kIdentity);
     VolumeRecord nan = volumeRecord(1, 1), skewed = volumeRecord(2, 1), mono = volumeRecord(3, 1, 1);
@@ -191,7 +196,7 @@ TEST_F(CacheFileTest, AVolumeRecordThatDoesNotFitOrIsInvalidIsCorruption) {
 TEST_F(CacheFileTest, NewFileStartsWithItsHeader) {
     overwrite(path_, "");  // an empty file is taken as a new one
     CacheFile file(path_, kIdentity);
-    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 2\n"
+    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 3\n"
                                "SCENE=0123456789abcdef0123456789abcdef\nOPTIONS=-ab 2 -aa 0.1 -ad 512\nCHANNELS=3\n\n");
     EXPECT_TRUE(file.readNew().empty());
     EXPECT_EQ(file.path(), path_);
@@ -230,15 +235,20 @@ TEST_F(CacheFileTest, RefusesAFileMadeForAnotherSceneOptionsOrChannels) {
     expectSame(CacheFile(path_, kIdentity).readNew(), records(0, 1));
 }
 
-// A file of format 1 (Brume before records kept their instant) is refused, and left as it was.
-TEST_F(CacheFileTest, RefusesAFileOfTheFirstFormat) {
-    std::string old = "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 1\nSCENE=" + kIdentity.scene +
-                      "\nOPTIONS=" + kIdentity.options + "\nCHANNELS=3\n\n";
-    overwrite(path_, old);
-    std::string e = errorOf([&] { CacheFile(path_, kIdentity); });
-    EXPECT_EQ(e, "cache file " + path_ + " was made by an earlier Brume (cache format 1, whose records have no "
-                 "instant); remove it or use another -af file");
-    EXPECT_EQ(contents(path_), old);
+// Files of formats 1 (Brume before records kept their instant) and 2 (before volume records held the sources'
+// light) are refused, and left as they were.
+TEST_F(CacheFileTest, RefusesFilesOfEarlierFormats) {
+    const std::pair<int, std::string> formats[] = {
+        {1, "whose records have no instant"}, {2, "whose volume records hold no light straight from the sources"}};
+    for (const auto& [format, why] : formats) {
+        std::string old = "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache " + std::to_string(format) +
+                          "\nSCENE=" + kIdentity.scene + "\nOPTIONS=" + kIdentity.options + "\nCHANNELS=3\n\n";
+        overwrite(path_, old);
+        std::string e = errorOf([&] { CacheFile(path_, kIdentity); });
+        EXPECT_EQ(e, "cache file " + path_ + " was made by an earlier Brume (cache format " + std::to_string(format) +
+                         ", " + why + "); remove it or use another -af file");
+        EXPECT_EQ(contents(path_), old);
+    }
 }
 
 // A damaged header's bytes are shown as printable text in the refusal (never binary on a terminal): \xNN, at

@@ -26,10 +26,23 @@ double coefficientAt(const VolumeRecord& r, const dvec3& delta, double share, in
     return r.value(0, k, c) + share * change(r, delta, k, c);
 }
 
-// A peak's light at the record's point moved by delta, relative to its own: as of an equivalent point source
-// where its ray met a surface, to first order 1 + 2 ω·δ/d, kept between 0 and 2 as the harmonics' mean is.
-double peakChange(const glm::vec4& ray, const dvec3& delta) {
-    return 1 + std::clamp(2 * glm::dot(dvec3(ray), delta) * ray.w, -1.0, 1.0);
+// A peak's light at the record's point moved by delta: as of an equivalent point source where its ray met a
+// surface (or at the source it samples), seen from p, the way to it turned and its light scaled by the
+// inverse square of the new distance, at most 4 and at least 1/4 times its own (the zones keep within a
+// third of the distance); from infinity it stays as it is.
+struct MovedPeak {
+    dvec3 dir;
+    double scale;
+};
+
+MovedPeak movedPeak(const glm::vec4& ray, const dvec3& delta) {
+    dvec3 dir(ray);
+    if (!(ray.w > 0)) return {dir, 1};
+    double d = 1 / double(ray.w);
+    dvec3 to = dir * d - delta;
+    double moved = glm::length(to);
+    if (!(moved > 0)) return {dir, 4};
+    return {to / moved, std::clamp(d * d / (moved * moved), 0.25, 4.0)};
 }
 
 }  // namespace
@@ -45,7 +58,7 @@ double VolumeZones::weigh(const VolumeRecord& r, const Receiver& at, Spectrum* v
         for (int c = 0; c < ch; ++c)
             (*value)[c] = float(std::max(0.0, coefficientAt(r, delta, extrapolation(r, delta, c), 0, c)) * kShY0);
         for (int i = 0; i < r.peaks(); ++i) {
-            double f = peakChange(r.peakRays[i], delta) / (4 * std::numbers::pi);
+            double f = movedPeak(r.peakRays[i], delta).scale / (4 * std::numbers::pi);
             for (int c = 0; c < ch; ++c) (*value)[c] += float(r.flux(i, c) * f);
         }
     }
@@ -53,7 +66,7 @@ double VolumeZones::weigh(const VolumeRecord& r, const Receiver& at, Spectrum* v
 }
 
 Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const dvec3& dir,
-                                const std::array<double, kShCount>& y, const PhaseMixture& phase) {
+                                const std::array<double, kShCount>& y, const PhaseMixture& phase, bool sources) {
     const int ch = r.channels();
     const dvec3 delta = p - r.point;
     // Per channel, the sums of c_k Y_k(dir) of each order.
@@ -67,11 +80,10 @@ Spectrum VolumeZones::scattered(const VolumeRecord& r, const dvec3& p, const dve
         for (int c = 0; c < ch; ++c)
             out[c] += coefficient[c] * std::max(0.f, order[0][c] + float(g) * (order[1][c] + float(g) * order[2][c]));
     });
-    for (int i = 0; i < r.peaks(); ++i) {
-        const glm::vec4& ray = r.peakRays[i];
-        Spectrum response = phase.response(dir, dvec3(ray));
-        double change = peakChange(ray, delta);
-        for (int c = 0; c < ch; ++c) out[c] += float(response[c] * r.flux(i, c) * change);
+    for (int i = 0; i < r.peaksWith(sources); ++i) {
+        MovedPeak peak = movedPeak(r.peakRays[i], delta);
+        Spectrum response = phase.response(dir, peak.dir);
+        for (int c = 0; c < ch; ++c) out[c] += float(response[c] * r.flux(i, c) * peak.scale);
     }
     return out;
 }

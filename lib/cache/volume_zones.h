@@ -24,10 +24,11 @@ public:
     double weigh(const VolumeRecord& r, const Receiver& at, Spectrum* value) const;
     // What the record says `phase` at p scatters back along a ray of direction dir, given Y_k(dir) as `basis`
     // (shBasis: one per lookup, whatever the records): Σ over the lobes of coefficient × (Σ_k g^l c_k(p) Y_k(dir),
-    // at least 0 per channel, + Σ over the peaks of flux(p) × p_g(ω·dir)), the coefficients and peaks
-    // extrapolated to p by their gradients (by at most as much as would zero or double the mean).
+    // at least 0 per channel, + Σ over the peaks of flux(p) × p_g(ω(p)·dir)), the coefficients extrapolated to p
+    // by their gradients (by at most as much as would zero or double the mean), the peaks moved there as point
+    // sources; the sources' peaks only with `sources`.
     static Spectrum scattered(const VolumeRecord& r, const dvec3& p, const dvec3& dir,
-                              const std::array<double, kShCount>& basis, const PhaseMixture& phase);
+                              const std::array<double, kShCount>& basis, const PhaseMixture& phase, bool sources);
 
     ZoneBox box(const VolumeRecord& r, const dvec3& origin) const;
     double reach(const VolumeRecord& r) const { return r.radius; }

@@ -25,13 +25,13 @@ bool CacheClient::waitsFor(const Receiver& at, const SurfaceId& surface, double 
     return true;
 }
 
-bool CacheClient::inScattered(const Receiver& at, const dvec3& dir, const PhaseMixture& phase, double pathWeight,
-                              PathContext& ctx, Spectrum& value) const {
+bool CacheClient::inScattered(const Receiver& at, const dvec3& dir, const PhaseMixture& phase, bool sources,
+                              double pathWeight, PathContext& ctx, Spectrum& value) const {
     if (!volumes_ || !ctx.visit) return false;
     Spectrum sum(0.f);
     const auto basis = shBasis(dir);
     double total = volumes_->gather(at, [&](const VolumeRecord& r, double w) {
-        sum += VolumeZones::scattered(r, at.point, dir, basis, phase) * float(w);
+        sum += VolumeZones::scattered(r, at.point, dir, basis, phase, sources) * float(w);
     });
     if (total > 0) {
         value = sum * float(1 / total);
@@ -122,7 +122,11 @@ VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scra
     PathState child = recordRays(q, scratch);
     aimingFrom(child, q.at.point, dvec3(0), samples.strata(), false);
     tracePass(samples, 0, SurfaceId{}, child, ctx);
-    VolumeRecord record = buildVolumeRecord(samples, volumes_->kind().shape(), q.at.level, nearestSource(q.at.point));
+    std::vector<SourceSamples> sources(scene_.lights().size());
+    for (size_t i = 0; i < sources.size(); ++i)
+        lights_.arriving(scene_.lights()[i], q.at.point, sourceSamples(q), child, ctx, sources[i]);
+    VolumeRecord record =
+        buildVolumeRecord(samples, sources, volumes_->kind().shape(), q.at.level, nearestSource(q.at.point));
     record.time = q.at.time;
     return record;
 }

@@ -5,6 +5,7 @@
 #include "cache/surface_cache.h"
 #include "cache/volume_cache.h"
 #include "integrator/hit_shading.h"
+#include "integrator/light_sampler.h"
 #include "integrator/media.h"
 #include "integrator/settings.h"
 #include "integrator/sky_portals.h"
@@ -19,9 +20,9 @@ public:
     // requests' keys.
     CacheClient(const SurfaceCache* cache, const VolumeCache* volumes, const RenderScene& scene,
                 const RenderSettings& settings, const Tracer& tracer, const HitShading& shading, const Media& media,
-                const SkyPortals& portals, const SunPatches& patches, Seeds seeds)
+                const LightSampler& lights, const SkyPortals& portals, const SunPatches& patches, Seeds seeds)
         : cache_(cache), volumes_(volumes), scene_(scene), settings_(settings), tracer_(tracer), shading_(shading),
-          media_(media), portals_(portals), patches_(patches), seeds_(seeds) {}
+          media_(media), lights_(lights), portals_(portals), patches_(patches), seeds_(seeds) {}
 
     const SurfaceCache* cache() const { return cache_; }
     const VolumeCache* volumes() const { return volumes_; }
@@ -32,11 +33,12 @@ public:
     bool irradiance(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
                     PathContext& ctx, Spectrum& value) const;
 
-    // The light a medium's `phase` at `at.point` scatters back along a ray of direction `dir` from everything
-    // but the sources next-event estimation samples, from the volume records (true); where there is none, as
-    // irradiance() (the path's weight times the phase's coefficient weighs the miss).
-    bool inScattered(const Receiver& at, const dvec3& dir, const PhaseMixture& phase, double pathWeight,
-                     PathContext& ctx, Spectrum& value) const;
+    // The light a medium's `phase` at `at.point` scatters back along a ray of direction `dir`, from the volume
+    // records (true): all of it but what LightSampler::besidesRecords gives, or with `sources` false all but
+    // the sources' (next-event estimation's) light; where there is none, as irradiance() (the path's weight
+    // times the phase's coefficient weighs the miss).
+    bool inScattered(const Receiver& at, const dvec3& dir, const PhaseMixture& phase, bool sources,
+                     double pathWeight, PathContext& ctx, Spectrum& value) const;
 
     // Radiance's -ad at the first bounce, scaled down by the looking ray's weight deeper in a path (at least
     // kMinDivisions).
@@ -59,13 +61,18 @@ public:
     // light, next-event estimation gives the direct. Their own misses go to `visit`.
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
     // A volume record: the radiance of rays stratified over the sphere, each continuing one bounce deeper, the
-    // sources they meet left out as a surface record's rays leave them. One pass: the rays that look volume
-    // records up (view rays, record rays through a medium) gather many of them along their way, which
-    // averages their noise (more passes cost 3-6x in the corridor of make demo, for no smaller error).
+    // sources they meet left out as a surface record's rays leave them, and each source's light by
+    // sourceSamples of next-event estimation's shadow rays (LightSampler::arriving). One pass: the rays that
+    // look volume records up (view rays, record rays through a medium) gather many of them along their way,
+    // which averages their noise (more passes cost 3-6x in the corridor of make demo, for no smaller error).
     VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
 private:
     static constexpr int kMinDivisions = 16;
+    // A volume record's shadow rays per source: an eighth of its sphere's rays, at least 8 (128 at -ad 1024,
+    // where a view ray's in-scattering point takes one to four; a record's light is shared by the many
+    // points in its zone).
+    int sourceSamples(const RecordRequest& request) const { return std::max(8, recordDivisions(request) / 8); }
     // The standard error a record's samples aim for, relative to its light, as a share of -aa: a record's
     // noise is not an error its zone's neighbours average out, as every lookup in the zone shares it. 1.5 %
     // at -aa .1: at -ad 1024 daylit rooms' records (1-1.4 %) take one or two passes, while those seeing
@@ -100,6 +107,7 @@ private:
     const Tracer& tracer_;
     const HitShading& shading_;
     const Media& media_;
+    const LightSampler& lights_;
     const SkyPortals& portals_;
     const SunPatches& patches_;
     Seeds seeds_;

@@ -33,7 +33,7 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       lights_(scene, settings_, shading_, media_, shadowRays_),
       portals_(scene, shading_, shadowRays_, settings_.skyPortals),
       patches_(scene, shading_, shadowRays_, lights_, settings_.skyPortals),
-      cache_(cache, volumes, scene, settings_, *this, shading_, media_, portals_, patches_, seeds_),
+      cache_(cache, volumes, scene, settings_, *this, shading_, media_, lights_, portals_, patches_, seeds_),
       surfaces_(scene, settings_, lights_, portals_, patches_, cache_, *this, roulette_),
       mediaTransport_(scene, settings_, lights_, cache_, *this, roulette_) {
     const Bounds3& extent = scene.geometry().extent();

@@ -58,6 +58,12 @@ Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, c
     return sourcesLd(at, surface, state, ctx, shares) + flames_.sample(at, surface, state, subdivision(state), ctx);
 }
 
+Spectrum LightSampler::besidesRecords(const Scatterer& at, const PathState& state, PathContext& ctx) const {
+    Spectrum value = flames_.sample(at, SurfaceId{}, state, subdivision(state), ctx);
+    if (mirrorImagesOn()) value += directViaMirrors(at, SurfaceId{}, state, ctx);
+    return value;
+}
+
 Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,
                                  PathContext& ctx, const SourceShares* shares) const {
     const std::vector<Light>& lights = scene_.lights();
@@ -156,11 +162,10 @@ Spectrum LightSampler::directFrom(const Light& light, double closedForm, double 
         if (f.isBlack() && !controlled) continue;
         Ray shadow{point, s->dir, std::numeric_limits<double>::infinity(), surface};
         float weight = float(1 / (s->pdf * count));
-        Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), s->distance, scene_);
-        if (seen == Occlusion::Unsure || (seen == Occlusion::Clear && media_.attenuates(shadow, s->distance, state, ctx.smoke))) {
+        Spectrum t;
+        Occlusion seen = passage(shadow, light, s->distance, state, ctx, t);
+        if (seen == Occlusion::Unsure) {
             const Spectrum& le = sourceRadiance(light, *s, point, scratch, patterns);
-            Spectrum t = seen == Occlusion::Unsure ? shadowRays_.toSource(shadow, light, state, ctx)
-                                                   : media_.clearTransmittance(shadow, s->distance, state, ctx.smoke, ctx.rng);
             if (record) recordShadowRay(ctx, point, *s, light, le * t);
             sum.addProduct(f * t, le, weight);
             if (controlled) {
@@ -186,6 +191,37 @@ Spectrum LightSampler::directFrom(const Light& light, double closedForm, double 
         sum += *at.lambertian() * e.radiance * unblocked * float(1 / kPi);
     }
     return sum;
+}
+
+Occlusion LightSampler::passage(const Ray& shadow, const Light& light, double distance, const PathState& state,
+                                PathContext& ctx, Spectrum& t) const {
+    Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), distance, scene_);
+    if (seen == Occlusion::Unsure) t = shadowRays_.toSource(shadow, light, state, ctx);
+    else if (seen == Occlusion::Clear && media_.attenuates(shadow, distance, state, ctx.smoke))
+        t = media_.clearTransmittance(shadow, distance, state, ctx.smoke, ctx.rng), seen = Occlusion::Unsure;
+    return seen;
+}
+
+void LightSampler::arriving(const Light& light, const dvec3& point, int count, const PathState& state,
+                            PathContext& ctx, SourceSamples& out) const {
+    const Emitter& e = light.emitter();
+    if (!samplesSource(light, SurfaceId{}) || e.radiance.isBlack()) return;
+    uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    LightView view = light.view(point);
+    Spectrum scratch;
+    for (int k = 0; k < count; ++k) {
+        double u, v;
+        sobol2D(k, scramble, u, v);
+        auto s = light.sample(view, u, v);
+        if (!s || (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius)) continue;
+        Spectrum t;
+        Occlusion seen = passage(Ray{point, s->dir, std::numeric_limits<double>::infinity(), SurfaceId{}}, light,
+                                 s->distance, state, ctx, t);
+        if (seen == Occlusion::Blocked) continue;
+        Spectrum flux = sourceRadiance(light, *s, point, scratch, ctx.scratch.patterns) * float(1 / (s->pdf * count));
+        if (seen == Occlusion::Unsure) flux *= t;
+        if (!flux.isBlack()) out.push_back({s->dir, s->distance, flux});
+    }
 }
 
 // The radiance a source sample sends toward `from`: the emitter's own, or, with Radiance's spotlight focus (a

@@ -2,6 +2,7 @@
 // flat mirrors, along shadow rays that cross clear glass, antimatter and media — one routine for surface
 // and medium points (pbrt-v4's SampleLd), which weighs each source sample by the scatterer's response.
 #pragma once
+#include "cache/source_samples.h"
 #include "integrator/flame_lights.h"
 #include "integrator/hit_shading.h"
 #include "integrator/media.h"
@@ -32,6 +33,13 @@ public:
     // medium), each source's taking its share (`shares`, if given) where it is not found.
     Spectrum sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
                       const SourceShares* shares = nullptr) const;
+    // What volume records leave to next-event estimation at a point in a medium: the flames' light and the
+    // sources' seen in flat mirrors (they hold the rest, see arriving).
+    Spectrum besidesRecords(const Scatterer& at, const PathState& state, PathContext& ctx) const;
+    // `count` stratified samples of `light`'s light arriving straight at `point` in a medium, as much as gets
+    // through what lies between (none that is blocked), for a volume record.
+    void arriving(const Light& light, const dvec3& point, int count, const PathState& state, PathContext& ctx,
+                  SourceSamples& out) const;
     // One source's light scattered toward the viewer by `at`.
     Spectrum fromSource(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
                         PathContext& ctx) const {
@@ -58,6 +66,10 @@ private:
     bool samplesSource(const Light& light, const SurfaceId& surface) const;
     std::optional<Spectrum> oneSourceOf(const Scatterer& at, const SurfaceId& surface, const PathState& state,
                                         PathContext& ctx, const SourceShares* shares) const;
+    // How much of a source sample's light the way from `shadow`'s origin to it (`distance` along it) lets
+    // through: Clear or Blocked where all or none, else Unsure with `t`, per channel.
+    Occlusion passage(const Ray& shadow, const Light& light, double distance, const PathState& state,
+                      PathContext& ctx, Spectrum& t) const;
     Spectrum directFrom(const Light& light, double closedForm, double share, const Scatterer& at,
                         const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
     Spectrum directViaMirrors(const Scatterer& at, const SurfaceId& surface, const PathState& state,

@@ -173,15 +173,16 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
 }
 
 // The light a medium at `point` scatters back along the ray of direction `dir`, the phase's coefficients
-// included: the sources' by next-event estimation, the rest from the volume records where there are, else by
+// included: from the volume records where there are (all but the flames' and mirrored sources' light, which
+// next-event estimation adds), else the sources' by next-event estimation and the rest by
 // one ray drawn from the phase function while -ab bounces remain (a scattering is a bounce, as a diffuse
 // reflection is), else -av.
 Spectrum MediaTransport::scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase,
                                    const PathState& state, PathContext& ctx) const {
     bool beyond = state.ambientLevel >= settings_.ambientBounces;
     Spectrum records;
-    if (!beyond && fromRecords(point, dir, phase, state, ctx, records))
-        return lights_.sampleLd(Scatterer(point, dir, phase, false), SurfaceId{}, state, ctx) + records;
+    if (!beyond && fromRecords(point, dir, phase, true, state, ctx, records))
+        return lights_.besidesRecords(Scatterer(point, dir, phase, false), state, ctx) + records;
     bool continues = !beyond || settings_.bounceTail();
     Spectrum value = lights_.sampleLd(Scatterer(point, dir, phase, continues), SurfaceId{}, state, ctx);
     if (!continues) return value + phase.coefficient() * settings_.ambientValue;
@@ -194,15 +195,15 @@ Spectrum MediaTransport::indirect(const dvec3& point, const dvec3& dir, const Ph
                                   const PathState& state, PathContext& ctx) const {
     bool beyond = state.ambientLevel >= settings_.ambientBounces;
     Spectrum records;
-    if (!beyond && fromRecords(point, dir, phase, state, ctx, records)) return records;
+    if (!beyond && fromRecords(point, dir, phase, false, state, ctx, records)) return records;
     if (beyond && !settings_.bounceTail()) return phase.coefficient() * settings_.ambientValue;
     return continued(point, dir, phase, state, ctx, false);
 }
 
-bool MediaTransport::fromRecords(const dvec3& point, const dvec3& dir, const PhaseMixture& phase,
+bool MediaTransport::fromRecords(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, bool sources,
                                  const PathState& state, PathContext& ctx, Spectrum& value) const {
-    return cache_.inScattered(Receiver{point, std::nullopt, state.ambientLevel, ctx.time}, dir, phase, state.weight,
-                              ctx, value);
+    return cache_.inScattered(Receiver{point, std::nullopt, state.ambientLevel, ctx.time}, dir, phase, sources,
+                              state.weight, ctx, value);
 }
 
 // One ray drawn from the phase function, one bounce deeper (past -ab by Russian roulette): with

@@ -4,7 +4,8 @@
 // medium weighted by its transmittance, flames' light summed along them (ParticipatingMedia::emittedAlong)
 // and in-scattering at points forced into the medium; rays averaged with many others (diffuse and sampled
 // ones) take the sources' light at one such point and the rest at delta tracking's first collision, or the
-// surface behind. Where scattering points find volume records, these give all but the sources' light there.
+// surface behind. Where scattering points find volume records, these give the light there: the sources' too
+// where the ray has not taken it elsewhere (LightSampler::besidesRecords says what they leave out).
 #pragma once
 #include "integrator/cache_client.h"
 #include "integrator/light_sampler.h"
@@ -33,10 +34,10 @@ private:
                        PathContext& ctx) const;
     Spectrum indirect(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
                       PathContext& ctx) const;
-    // What the volume records say the phase at `point` scatters along the ray (true), or false: no record
-    // (the path samples that light itself).
-    bool fromRecords(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
-                     PathContext& ctx, Spectrum& value) const;
+    // What the volume records say the phase at `point` scatters along the ray (true; the sources' light only
+    // with `sources`), or false: no record (the path samples that light itself).
+    bool fromRecords(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, bool sources,
+                     const PathState& state, PathContext& ctx, Spectrum& value) const;
     Spectrum continued(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
                        PathContext& ctx, bool sharesSources) const;
     int inScatteringSamples(double length) const;

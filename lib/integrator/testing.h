@@ -69,7 +69,8 @@ struct Parts {
           lights(scene.render, settings, shading, media, shadowRays),
           portals(scene.render, shading, shadowRays, settings.skyPortals),
           patches(scene.render, shading, shadowRays, lights, settings.skyPortals),
-          cache(surfaceCache, volumeCache, scene.render, settings, tracer, shading, media, portals, patches, Seeds{s.seed}),
+          cache(surfaceCache, volumeCache, scene.render, settings, tracer, shading, media, lights, portals, patches,
+                Seeds{s.seed}),
           surfaces(scene.render, settings, lights, portals, patches, cache, tracer, roulette),
           transport(scene.render, settings, lights, cache, tracer, roulette),
           scratch(scene.render) {
