@@ -198,7 +198,7 @@ Occlusion LightSampler::passage(const Ray& shadow, const Light& light, double di
     Occlusion seen = scene_.geometry().occlusion(shadow, light.surface(), distance, scene_);
     if (seen == Occlusion::Unsure) t = shadowRays_.toSource(shadow, light, state, ctx);
     else if (seen == Occlusion::Clear && media_.attenuates(shadow, distance, state, ctx.smoke))
-        t = media_.clearTransmittance(shadow, distance, state, ctx.smoke, ctx.rng), seen = Occlusion::Unsure;
+        t = media_.clearTransmittance(shadow, distance, state, ctx.smoke), seen = Occlusion::Unsure;
     return seen;
 }
 
@@ -290,7 +290,7 @@ Spectrum LightSampler::directViaMirrors(const Scatterer& at, const SurfaceId& su
                                                                                     s->distance - toMirror, scene_);
                 if (seen == Occlusion::Blocked) continue;
                 if (seen == Occlusion::Unsure) t *= shadowRays_.toSource(onward, light, crossing, ctx);
-                else if (media_.present()) t *= media_.clearTransmittance(onward, s->distance - toMirror, crossing, ctx.smoke, ctx.rng);
+                else if (media_.present()) t *= media_.clearTransmittance(onward, s->distance - toMirror, crossing, ctx.smoke);
                 if (!t.isBlack())
                     sum += f * sourceRadiance(light, *s, image, scratch, ctx.scratch.patterns) * mirror.reflectance * t *
                            float(1 / (s->pdf * count));

@@ -44,8 +44,8 @@ bool Media::attenuates(const Ray& ray, double distance, const PathState& state, 
 }
 
 Spectrum Media::clearTransmittance(const Ray& ray, double distance, const PathState& state,
-                                   const ParticipatingMedia& smoke, Random& rng) const {
-    return smoke.transmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state), rng);
+                                   const ParticipatingMedia& smoke) const {
+    return smoke.transmittance(ray, 0, distance, homogeneousAlong(ray, nullptr, state));
 }
 
 }  // namespace brume

@@ -36,7 +36,7 @@ public:
     bool attenuates(const Ray& ray, double distance, const PathState& state, const ParticipatingMedia& smoke) const;
     // Along a shadow ray that meets no surface before `distance`.
     Spectrum clearTransmittance(const Ray& ray, double distance, const PathState& state,
-                                const ParticipatingMedia& smoke, Random& rng) const;
+                                const ParticipatingMedia& smoke) const;
 
 private:
     const RenderScene& scene_;

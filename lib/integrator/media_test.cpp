@@ -29,7 +29,7 @@ constexpr double kLength = 7;
 double transmittance(Parts& parts, double time) {
     Random rng(1);
     HomogeneousMedium clear;
-    return parts.media.smokeAt(time).transmittance(kThrough, 0, kLength, clear, rng)[0];
+    return parts.media.smokeAt(time).transmittance(kThrough, 0, kLength, clear)[0];
 }
 
 RenderSettings at(double time) {
@@ -118,5 +118,5 @@ TEST(IntegratorMedia, MediaArePresentOnlyWhereSomethingAbsorbs) {
     EXPECT_TRUE(fog.media.attenuates(shadow, 0.5, inside, fog.media.smokeAt(0)));
     EXPECT_FALSE(fog.media.attenuates(shadow, 0.5, outside, fog.media.smokeAt(0)));
     Random rng;
-    EXPECT_NEAR(fog.media.clearTransmittance(shadow, 0.5, inside, fog.media.smokeAt(0), rng)[0], std::exp(-0.1), 1e-6);
+    EXPECT_NEAR(fog.media.clearTransmittance(shadow, 0.5, inside, fog.media.smokeAt(0))[0], std::exp(-0.1), 1e-6);
 }

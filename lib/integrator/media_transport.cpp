@@ -101,7 +101,7 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
     // Flames' light along the ray at points of their own, the transmittance to what lies behind with it.
     Spectrum t, value(0.f);
     if (emits) value = smoke.emittedAlong(ray, start, end, h, ctx.rng, t);
-    else t = smoke.transmittance(ray, start, end, h, ctx.rng);
+    else t = smoke.transmittance(ray, start, end, h);
     if (!t.isBlack()) value += behind(t);
     if (scatters) value += inScattered(ray, start, end, h, state, ctx, Part::All);
     return value;
@@ -159,7 +159,7 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
         t = mixture.sample((k + ctx.rng.uniform()) / n, t);  // in order: each draw searched for from the last
         double density = mixture.density(t);
         if (!(density > 0)) continue;
-        Spectrum tr = smoke.transmittance(ray, start, t, h, ctx.rng);
+        Spectrum tr = smoke.transmittance(ray, start, t, h);
         if (tr.isBlack()) continue;
         dvec3 point = ray.org + t * ray.dir;
         Spectrum weight = tr * float(1 / (density * n));

@@ -8,7 +8,7 @@ Spectrum ShadowRays::toSurface(Ray ray, const SurfaceId& target, bool toInfinity
                                PathState& state, PathContext& ctx, SurfaceHit* reached) const {
     return walk(ray, target, toInfinity, targetKind, state, ctx, reached,
                 [&](const Ray& stretch, double end, const HomogeneousMedium& h, const Spectrum&) {
-                    return ctx.smoke.transmittance(stretch, 0, end, h, ctx.rng);
+                    return ctx.smoke.transmittance(stretch, 0, end, h);
                 });
 }
 

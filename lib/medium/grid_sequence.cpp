@@ -30,6 +30,12 @@ double GridSequence::density(const dvec3& p, double time) const {
     return (1 - b.w) * frames_[b.before].grid.density(p) + b.w * frames_[b.later].grid.density(p);
 }
 
+double GridSequence::integral(const Ray& ray, double t0, double t1, double time) const {
+    const Blend b = blendAt(time);
+    if (b.later == b.before) return frames_[b.before].grid.integral(ray, t0, t1);
+    return (1 - b.w) * frames_[b.before].grid.integral(ray, t0, t1) + b.w * frames_[b.later].grid.integral(ray, t0, t1);
+}
+
 MajorantGrid GridSequence::boundsAt(double time, int voxelsPerCell) const {
     const Blend b = blendAt(time);
     if (b.later == b.before) return MajorantGrid(frames_[b.before].grid, voxelsPerCell);

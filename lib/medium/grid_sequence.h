@@ -21,6 +21,8 @@ public:
 
     // Linear in time between the key frames around `time`; the first or last frame's density outside them.
     double density(const dvec3& p, double time) const;
+    // ∫ density(ray.at(t), time) dt over [t0, t1], exactly (DensityGrid::integral).
+    double integral(const Ray& ray, double t0, double t1, double time) const;
     // Where any frame's density can be non-zero.
     Bounds3 bounds() const;
     // Bounds the density at every time in [t0, t1]: the majorants of the key frames from the last at or

@@ -24,8 +24,8 @@ namespace brume {
 // whose interpolation support (one voxel each side of its centre) meets the cell — which also bounds any convex
 // combination of the grids, such as linear interpolation in time.
 // Each cell also holds a lower bound (minorant): the smallest voxel whose support meets the cell, 0 where an
-// inactive voxel does, over all the grids (0 unless they share the first grid's transform). Residual ratio
-// tracking takes the smoke below it in closed form and tracks only the rest.
+// inactive voxel does, over all the grids (0 unless they share the first grid's transform). Where it equals the
+// majorant the smoke is even, and its transmittance closed form.
 class MajorantGrid {
 public:
     static constexpr int kMaxCells = 1 << 18;

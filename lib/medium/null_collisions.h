@@ -34,26 +34,6 @@ bool forEachTentativeCollision(const Segments& segments, Random& random, const F
     return true;
 }
 
-// Ratio tracking (Novák, Selle and Jarosz 2014): the transmittance exp(−∫σ_t dt) over `segments` (in order
-// along the ray), estimated without bias as the product of (1 − σ_t/σ̄) at tentative collisions. Once every
-// band is below 0.1, Russian roulette ends it (0) or carries on with the estimate scaled up: deep smoke costs
-// a few collisions, not thousands.
-template <class Segments, class Extinction>
-Spectrum ratioTracking(const Segments& segments, const Extinction& extinction, Random& random) {
-    Spectrum transmittance(1.f);
-    bool through = forEachTentativeCollision(segments, random, [&](double t, double majorant) {
-        Spectrum sigma = extinction(t);
-        for (int i = 0; i < transmittance.size(); ++i)
-            transmittance[i] *= std::max(0.f, 1 - float(sigma[i] / majorant));
-        float most = transmittance.maxValue();
-        if (most >= 0.1f) return true;
-        if (random.uniform() >= most) return false;  // roulette: survive with the largest band's share
-        transmittance *= 1 / most;
-        return true;
-    });
-    return through ? transmittance : Spectrum(0.f, transmittance.size());
-}
-
 // The first real collision of delta tracking (Woodcock et al. 1965) along `segments`, for a path whose bands
 // carry `weight`, with spectral tracking's probabilities (Kutz, Habel, Li and Novák 2017): a tentative
 // collision is real with probability ∝ mean(weight·σ_t), null ∝ mean(weight·(σ̄ − σ_t)), and the weight is

@@ -75,7 +75,7 @@ double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3&
 
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                           Random& random, Spectrum& transmittance, int points) const {
-    auto stretch = [&](double t0, double t1) { return ParticipatingMedia::transmittance(ray, t0, t1, h, random); };
+    auto stretch = [&](double t0, double t1) { return ParticipatingMedia::transmittance(ray, t0, t1, h); };
     std::vector<MajorantSegment> segments;
     majorants(ray, start, end, &h, segments);
     ForcedCollision forced(segments);
@@ -102,10 +102,9 @@ Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double e
     return sum;
 }
 
-Spectrum ParticipatingMedia::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h,
-                                           Random& random) const {
+Spectrum ParticipatingMedia::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h) const {
     Spectrum t = h.transmittance(end - start);
-    return t.isBlack() || !hasSmoke() ? t : t * smokeTransmittance(ray, start, end, random);
+    return t.isBlack() || !hasSmoke() ? t : t * smokeTransmittance(ray, start, end);
 }
 
 bool ParticipatingMedia::smokeAlong(const Ray& ray, double start, double end) const {
@@ -148,10 +147,10 @@ void ParticipatingMedia::majorants(const Ray& ray, double start, double end, con
     std::erase_if(out, [](const MajorantSegment& s) { return !(s.majorant > 0) || !(s.t1 > s.t0); });
 }
 
-Spectrum ParticipatingMedia::smokeTransmittance(const Ray& ray, double start, double end, Random& random) const {
+Spectrum ParticipatingMedia::smokeTransmittance(const Ray& ray, double start, double end) const {
     Spectrum t(1.f);
     for (const SmokeVolume& v : smoke_)
-        if (!t.isBlack() && crosses(v.bounds(), ray, start, end)) t *= v.transmittance(ray, start, end, random);
+        if (!t.isBlack() && crosses(v.bounds(), ray, start, end)) t *= v.transmittance(ray, start, end);
     return t;
 }
 

@@ -33,10 +33,10 @@ public:
     double flameDirectionDensity(const dvec3& from, const dvec3& dir) const;
     const Bounds3& flameBox() const { return flameBox_; }
     // The light the flames emit toward ray.org along [start, end], ∫ T σ_a B dt with T from `start` through
-    // `h` and the smoke, and in `transmittance` T over the whole stretch; both unbiased. `points` distances
+    // `h` and the smoke (unbiased), and in `transmittance` T over the whole stretch (exact). `points` distances
     // stratified over the majorant's forced collisions (ForcedCollision: exact for even smoke, where T is the
     // majorant's own exponential, however thick), with a uniform guard where the smoke's cells bound it
-    // loosely, T carried from point to point by the smoke's own estimate: a thick flame's light comes from its
+    // loosely, T carried from point to point: a thick flame's light comes from its
     // near side, a thin one's from all along.
     Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
                           Spectrum& transmittance, int points = 8) const;
@@ -54,10 +54,10 @@ public:
     enum class Band { Largest, Smallest };
     void majorants(const Ray& ray, double start, double end, const HomogeneousMedium* h,
                    std::vector<MajorantSegment>& out, Band band = Band::Largest) const;
-    // exp(−∫σ_t) of the smoke between start and end (an unbiased estimate).
-    Spectrum smokeTransmittance(const Ray& ray, double start, double end, Random& random) const;
-    // The same through `h` and the smoke: in closed form for `h`, by residual ratio tracking in the smoke.
-    Spectrum transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random) const;
+    // exp(−∫σ_t) of the smoke between start and end (SmokeVolume::transmittance: exact, no noise).
+    Spectrum smokeTransmittance(const Ray& ray, double start, double end) const;
+    // The same through `h` and the smoke (`h` in closed form).
+    Spectrum transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h) const;
     // σ_t of the smoke at p.
     Spectrum smokeExtinction(const dvec3& p) const;
     // The scattering at p: each medium's σ_s times `scale`, with its phase function.

@@ -1,7 +1,5 @@
 #include "medium/smoke.h"
 
-#include "medium/null_collisions.h"
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -67,20 +65,6 @@ EmissionCells flameCells(const SmokeVolume& smoke, const SmokeDescription& d) {
     return EmissionCells(box, 2 * voxel, [&](const dvec3& p) { return double(brightness(smoke.emission(p))); });
 }
 
-// Raises the residual's majorants for ratio tracking: its estimate's relative variance is e^{∫ r²/σ̄ dt} − 1 for
-// residual r ≤ σ̄, at most e^{D/m} − 1 with the majorants times m, D their optical depth, for m·D tentative
-// collisions on average. m makes D/m at most 0.02 (a standard deviation of 14%) but the collisions at most 32:
-// each costs one density lookup, far less than the shadow rays and samples whose noise it removes
-// (bench/smoke.py: 2 to 27 times less time for a given error than m = 1).
-void boostResidual(std::vector<MajorantSegment>& residual) {
-    constexpr double kVariance = 0.02, kCollisions = 32;
-    double depth = 0;
-    for (const MajorantSegment& s : residual) depth += s.majorant * (s.t1 - s.t0);
-    if (!(depth > kVariance)) return;
-    const double m = std::min(depth / kVariance, std::max(1.0, kCollisions / depth));
-    for (MajorantSegment& s : residual) s.majorant *= m;
-}
-
 }  // namespace
 
 SmokeDescription readSmoke(const SceneObject& o) {
@@ -137,27 +121,16 @@ Spectrum SmokeVolume::emission(const dvec3& p) const {
     return b * extinction(p) * (Spectrum(1.f) - description_.albedo);
 }
 
-Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax, Random& random) const {
-    thread_local std::vector<MajorantSegment> residual;
-    thread_local std::vector<double> lower;
-    residual.clear(), lower.clear();
-    double controlDepth = 0;  // ∫ minorant dt, in density units
+Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax) const {
+    double depth = 0;  // ∫ density dt
     majorant_.forEachBound(ray, tmin, tmax, [&](double t0, double t1, double majorant, double minorant) {
-        if (majorant > 0) {
-            residual.push_back({t0, t1, (majorant - minorant) * scale_});
-            lower.push_back(minorant);
-            controlDepth += minorant * (t1 - t0);
-        }
+        if (majorant <= minorant) depth += majorant * (t1 - t0);  // even smoke, or none
+        else depth += description_.frames->integral(ray, t0, t1, time_);
         return true;
     });
-    boostResidual(residual);
     const Spectrum& k = description_.extinctionPerDensity;
-    size_t at = 0;
-    Spectrum t = ratioTracking(residual, [&](double s) {
-        while (residual[at].t1 < s) ++at;  // collisions come in order along the ray
-        return k * float(std::max(0.0, density(ray.org + s * ray.dir) - lower[at]));
-    }, random);
-    for (int i = 0; i < t.size(); ++i) t[i] *= float(std::exp(-double(k[i]) * controlDepth));
+    Spectrum t(1.f, k.size());
+    for (int i = 0; i < t.size(); ++i) t[i] = float(std::exp(-double(k[i]) * depth));
     return t;
 }
 

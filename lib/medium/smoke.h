@@ -7,7 +7,6 @@
 #include "medium/emission_cells.h"
 #include "medium/grid_sequence.h"
 #include "medium/majorant_grid.h"
-#include "sampling/random.h"
 #include "scene/scene.h"
 #include "spectrum/spectrum.h"
 
@@ -60,11 +59,12 @@ public:
         });
     }
 
-    // exp(−∫σ_t) between tmin and tmax, per band, without bias: residual ratio tracking (Novák, Selle and
-    // Jarosz 2014) — the smoke below each cell's minorant in closed form, ratio tracking of the rest, against
-    // majorants raised up to a few dozen tentative collisions per ray so that the product's noise is small —
-    // so that smoke of even density costs no noise, and uneven smoke little.
-    Spectrum transmittance(const Ray& ray, double tmin, double tmax, Random& random) const;
+    // exp(−∫σ_t) between tmin and tmax, per band, without noise: the density's integral exactly (as
+    // interpolated, GridSequence::integral) where a majorant cell's smoke is uneven, in closed form where it
+    // is even, nothing where there is none. Ratio tracking, unbiased too, had a relative standard deviation
+    // of √(e^{D/m} − 1) for a residual optical depth D tracked with m·D collisions: in the corridor of make
+    // demo at t = 120 s view rays' errors were mostly that noise.
+    Spectrum transmittance(const Ray& ray, double tmin, double tmax) const;
 
 private:
     SmokeDescription description_;

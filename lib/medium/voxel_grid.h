@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include <glm/mat4x4.hpp>
@@ -41,6 +42,9 @@ public:
     virtual void forEachActive(const std::function<void(const IndexBox&, float)>& visit) const = 0;
     // The smallest value over `box`, 0 where one of its voxels is inactive.
     virtual float minimum(const IndexBox& box) const = 0;
+    // For each cell between voxel centres (its lowest corner's index), the 8 voxels at its corners:
+    // corners[8n + i + 2j + 4k] the value at cells[n] + (i, j, k), as density() interpolates them.
+    virtual void cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const = 0;
 };
 
 // The float grid `name` of the .vdb file `path` (see DensityGrid), through the OpenVDB module. Throws Error

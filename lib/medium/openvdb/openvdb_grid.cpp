@@ -123,4 +123,13 @@ float OpenVdbGrid::minimum(const IndexBox& box) const {
     return std::max(0.0f, m);
 }
 
+// One accessor for the whole batch: consecutive cells along a ray share the tree's nodes it caches.
+void OpenVdbGrid::cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const {
+    auto accessor = grid_->getConstUnsafeAccessor();
+    for (std::size_t n = 0; n < cells.size(); ++n)
+        for (int c = 0; c < 8; ++c)
+            corners[8 * n + c] = accessor.getValue(
+                openvdb::Coord(cells[n].x + (c & 1), cells[n].y + ((c >> 1) & 1), cells[n].z + ((c >> 2) & 1)));
+}
+
 }  // namespace brume

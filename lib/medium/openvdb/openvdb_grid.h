@@ -27,6 +27,7 @@ public:
     std::optional<IndexBox> activeBox() const override;
     void forEachActive(const std::function<void(const IndexBox&, float)>& visit) const override;
     float minimum(const IndexBox& box) const override;
+    void cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const override;
 
     const openvdb::FloatGrid& grid() const { return *grid_; }
 
