@@ -153,14 +153,14 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
     mixture.add(mixed ? forced / 2 : forced, &near);
     if (mixed) mixture.add(forced / 2, &far);
     int n = part == Part::All ? inScatteringSamples(even.length()) : 1;
-    Spectrum sum(0.f);
-    double t = -std::numeric_limits<double>::infinity();
+    Spectrum sum(0.f), tr(1.f);  // the transmittance from `start` to `reached`, carried from point to point
+    double t = -std::numeric_limits<double>::infinity(), reached = start;
     for (int k = 0; k < n; ++k) {
         t = mixture.sample((k + ctx.rng.uniform()) / n, t);  // in order: each draw searched for from the last
         double density = mixture.density(t);
         if (!(density > 0)) continue;
-        Spectrum tr = smoke.transmittance(ray, start, t, h);
-        if (tr.isBlack()) continue;
+        if (t > reached) tr *= smoke.transmittance(ray, reached, t, h), reached = t;
+        if (tr.isBlack()) break;
         dvec3 point = ray.org + t * ray.dir;
         Spectrum weight = tr * float(1 / (density * n));
         PhaseMixture phase;

@@ -1,14 +1,17 @@
 #include "medium/density_grid.h"
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace brume {
 
 DensityGrid::DensityGrid(std::shared_ptr<const VoxelGrid> voxels)
-    : voxels_(std::move(voxels)), indexFromWorld_(glm::inverse(voxels_->worldFromIndex())) {}
+    : voxels_(std::move(voxels)),
+      bounds_(voxels_->bounds()),
+      indexFromWorld_(glm::inverse(voxels_->worldFromIndex())) {}
 
 namespace {
 
@@ -35,8 +38,7 @@ struct Piece {
 
 double DensityGrid::integral(const Ray& ray, double t0, double t1) const {
     if (!clipToBox(bounds(), ray.org, ray.dir, t0, t1) || !(t1 > t0)) return 0;  // no density outside
-    // In index space voxel centres are the integers; the cells between them are [i, i+1]³. The ray's pieces
-    // in each cell first, then their corners in one batch.
+    // In index space voxel centres are the integers; the cells between them are [i, i+1]³.
     const dvec3 o = dvec3(indexFromWorld_ * glm::dvec4(ray.org, 1)), d = dvec3(indexFromWorld_ * glm::dvec4(ray.dir, 0));
     constexpr double kNever = std::numeric_limits<double>::infinity();
     const dvec3 start = o + t0 * d;
@@ -54,21 +56,31 @@ double DensityGrid::integral(const Ray& ray, double t0, double t1) const {
         next[a] = t0 + (double(cell[a] + (d[a] > 0)) - start[a]) / d[a];
         step[a] = 1 / std::abs(d[a]);
     }
-    std::vector<glm::ivec3> cells;
-    std::vector<Piece> pieces;
+    // Pieces in batches of kBatch: each batch's corners in one call.
+    constexpr std::size_t kBatch = 64;
+    std::array<glm::ivec3, kBatch> cells;
+    std::array<Piece, kBatch> pieces;
+    std::array<float, 8 * kBatch> corners;
+    std::size_t count = 0;
+    double sum = 0;
+    auto flush = [&] {
+        voxels_->cellCorners(std::span(cells.data(), count), corners);
+        for (std::size_t n = 0; n < count; ++n)
+            sum += cellIntegral(&corners[8 * n], o - dvec3(cells[n]), d, pieces[n].a, pieces[n].b);
+        count = 0;
+    };
     for (double a = t0; a < t1;) {
         int axis = next.x <= next.y ? (next.x <= next.z ? 0 : 2) : (next.y <= next.z ? 1 : 2);
         double b = std::min(next[axis], t1);
-        if (b > a) cells.push_back(cell), pieces.push_back({a, b});
+        if (b > a) {
+            cells[count] = cell, pieces[count] = {a, b};
+            if (++count == kBatch) flush();
+        }
         a = b;
         next[axis] += step[axis];
         cell[axis] += move[axis];
     }
-    std::vector<float> corners(8 * cells.size());
-    voxels_->cellCorners(cells, corners);
-    double sum = 0;
-    for (std::size_t n = 0; n < cells.size(); ++n)
-        sum += cellIntegral(&corners[8 * n], o - dvec3(cells[n]), d, pieces[n].a, pieces[n].b);
+    flush();
     return sum;
 }
 

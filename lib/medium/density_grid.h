@@ -30,7 +30,7 @@ public:
 
     // Where the density can be non-zero: trilinear interpolation reaches one voxel beyond the centres of
     // the outermost active voxels (tiles included). Empty for an empty grid.
-    Bounds3 bounds() const { return voxels_->bounds(); }
+    const Bounds3& bounds() const { return bounds_; }
     // The density at world point p (0 outside bounds()).
     double density(const dvec3& p) const { return voxels_->density(p); }
     // ∫ density(ray.org + t ray.dir) dt over [t0, t1], exact up to rounding: the ray is walked through the
@@ -49,6 +49,7 @@ public:
 
 private:
     std::shared_ptr<const VoxelGrid> voxels_;
+    Bounds3 bounds_;  // the voxels' (computed once: it maps the index box's corners to the world)
     glm::dmat4 indexFromWorld_;
 };
 

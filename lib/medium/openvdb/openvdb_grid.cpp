@@ -123,13 +123,25 @@ float OpenVdbGrid::minimum(const IndexBox& box) const {
     return std::max(0.0f, m);
 }
 
-// One accessor for the whole batch: consecutive cells along a ray share the tree's nodes it caches.
+// One accessor for the whole batch: consecutive cells along a ray share the tree's nodes it caches, and, one
+// step apart along an axis, the four corners of the face between them.
 void OpenVdbGrid::cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const {
     auto accessor = grid_->getConstUnsafeAccessor();
-    for (std::size_t n = 0; n < cells.size(); ++n)
-        for (int c = 0; c < 8; ++c)
-            corners[8 * n + c] = accessor.getValue(
-                openvdb::Coord(cells[n].x + (c & 1), cells[n].y + ((c >> 1) & 1), cells[n].z + ((c >> 2) & 1)));
+    for (std::size_t n = 0; n < cells.size(); ++n) {
+        float* c = &corners[8 * n];
+        glm::ivec3 step = n > 0 ? cells[n] - cells[n - 1] : glm::ivec3(0);
+        int axis = -1;
+        if (std::abs(step.x) + std::abs(step.y) + std::abs(step.z) == 1) axis = step.x ? 0 : step.y ? 1 : 2;
+        for (int k = 0; k < 8; ++k) {
+            const int bit = axis < 0 ? 0 : (k >> axis) & 1;
+            // Corner k of this cell is the previous cell's corner with the axis bit flipped, where they share it.
+            if (axis >= 0 && bit == (step[axis] > 0 ? 0 : 1)) {
+                c[k] = corners[8 * (n - 1) + (k ^ (1 << axis))];
+                continue;
+            }
+            c[k] = accessor.getValue(openvdb::Coord(cells[n].x + (k & 1), cells[n].y + ((k >> 1) & 1), cells[n].z + ((k >> 2) & 1)));
+        }
+    }
 }
 
 }  // namespace brume
