@@ -7,7 +7,7 @@
 # spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral; smoke.py
 # (time against error through FDS soot, with and without empty-space skipping) takes --repeat and is left out
 # with --skip-smoke; volume_cache.py (time against error of view rays through lit smoke, volume cache against path
-# tracing; about an hour) is left out with --skip-smoke too; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
+# tracing, 48 rays and 40 x 30 pictures; about 80 minutes) is left out with --skip-smoke too; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
 # picture at -ab 5 against Radiance's cache) take --remake-reference and --rerun-radiance, and are left out with
 # --skip-daylight.
 set -euo pipefail
