@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <span>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace brume {
 

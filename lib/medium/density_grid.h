@@ -35,8 +35,8 @@ public:
     double density(const dvec3& p) const { return voxels_->density(p); }
     // ∫ density(ray.org + t ray.dir) dt over [t0, t1], exact up to rounding: the ray is walked through the
     // cells between voxel centres in index space, within each of which the density along a line is a cubic
-    // in t (trilinear interpolation), which two-point Gauss–Legendre integrates exactly. Two lookups per cell
-    // the ray crosses (about three cells per voxel length).
+    // in t (trilinear interpolation), which two-point Gauss–Legendre integrates exactly. Per cell the ray
+    // crosses (about three per voxel length), its eight corner voxels, four of them shared with the cell before.
     double integral(const Ray& ray, double t0, double t1) const;
 
     double maxDensity() const { return voxels_->maxDensity(); }

@@ -123,11 +123,21 @@ Spectrum SmokeVolume::emission(const dvec3& p) const {
 
 Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax) const {
     double depth = 0;  // ∫ density dt
+    // Consecutive cells of uneven smoke are integrated in one walk through the voxels.
+    double unevenFrom = tmin, unevenTo = tmin;
+    auto integrateUneven = [&] {
+        if (unevenTo > unevenFrom) depth += description_.frames->integral(ray, unevenFrom, unevenTo, time_);
+    };
     majorant_.forEachBound(ray, tmin, tmax, [&](double t0, double t1, double majorant, double minorant) {
-        if (majorant <= minorant) depth += majorant * (t1 - t0);  // even smoke, or none
-        else depth += description_.frames->integral(ray, t0, t1, time_);
+        if (majorant > minorant) {
+            if (t0 != unevenTo) integrateUneven(), unevenFrom = t0;
+            unevenTo = t1;
+            return true;
+        }
+        depth += majorant * (t1 - t0);  // even smoke, or none
         return true;
     });
+    integrateUneven();
     const Spectrum& k = description_.extinctionPerDensity;
     Spectrum t(1.f, k.size());
     for (int i = 0; i < t.size(); ++i) t[i] = float(std::exp(-double(k[i]) * depth));
