@@ -7,7 +7,11 @@ Scenes (those of bench/smoke.py, with indirect light):
   plume     OpenVDB's smoke1 plume in a hall (albedo .9, g .3) lit by a ceiling panel, -ms 1.
   halo      a small lamp in a room of fog (-me .3, albedo .9, g .6), -ms .5.
   picture   the corridor at t = 120 s as a picture of 40 x 30 view rays over the same view (albedo .2 and .8,
-            -ab 1 only): records shared by 1200 rays, as a picture's pixels share them.
+            -ab 1 only): records shared by 1200 rays, as a picture's pixels share them; and as one of 160 x 120
+            rays (the cache only), whose error is that of its 40 x 30 rays through the smaller picture's pixel
+            centres, against the same reference, and whose path tracing costs 16 times the smaller one's (the
+            same paths per pixel, 16 times the pixels), at -aa .1 only: a picture of a useful size shares its
+            records among more pixels.
 At -ab 1 and -ab 3, with -al+ (nothing past -ab bounces, so that path tracing and the cache estimate the same
 light). Path tracing (-aa 0) repeats each ray r = 1, 4, 16, 64 times; the cache (-aa .1, and .05 at the last
 rung) traces the 48 rays r = 1, 4, 16 times in one run, its records shared by all of them (as a picture's are by
@@ -36,22 +40,29 @@ PICTURE = (40, 30)
 PICTURE_REFERENCE_REPEATS = 32
 PICTURE_PATHS = [1, 4]
 PICTURE_CACHED = [(1, ".1"), (1, ".05")]
+FINER = 4  # the larger picture's pixels across one of PICTURE's
 
 
-def picture_rays(eye, forward, right, up):
-    """PICTURE's directions over bench/smoke.py's 70° x 50° view, a ray through each pixel's centre."""
+def picture_rays(eye, forward, right, up, finer=1):
+    """Directions over bench/smoke.py's 70° x 50° view: PICTURE's pixel centres (finer 1), or a picture `finer`
+    times as wide and high whose pixels at (finer i + finer/2, finer j + finer/2) are PICTURE's (i, j); with the
+    indices of those, in PICTURE's order."""
     w, h = PICTURE
-    rays = []
-    for j in range(h):
-        for i in range(w):
-            a, b = ((i + 0.5) / w - 0.5) * 1.4, ((j + 0.5) / h - 0.5) * 0.9
+    rays, coarse = [], {}
+    for n in range(h * finer):
+        for m in range(w * finer):
+            x, y = (m + 0.5 * (finer == 1)) / (w * finer), (n + 0.5 * (finer == 1)) / (h * finer)
+            if m % finer == finer // 2 and n % finer == finer // 2:
+                coarse[(n // finer, m // finer)] = len(rays)
+            a, b = (x - 0.5) * 1.4, (y - 0.5) * 0.9
             rays.append(eye + tuple(f + a * r + b * u for f, r, u in zip(forward, right, up)))
-    return rays
+    return rays, [coarse[(j, i)] for j in range(h) for i in range(w)]
 
 
 def cases(tmp, chosen):
-    """(name, files, options, rays, RAYPATH, ladders) per measured case and -ab; ladders: (reference repeats,
-    path tracing's repeats, the cache's (repeats, -aa))."""
+    """(name, files, options, rays, RAYPATH, ladders, finer) per measured case and -ab; ladders: (reference
+    repeats, path tracing's repeats, the cache's (repeats, -aa)); finer: None, or for the larger picture (its
+    rays, the indices of the case's rays among them, FINER)."""
     base = {c[0]: c for c in scenes(tmp)}
     pale = os.path.join(tmp, "pale_smoke.rad")
     with open(os.path.join(CORRIDOR, "smoke.rad")) as f:
@@ -70,25 +81,43 @@ def cases(tmp, chosen):
                 continue
             opts = [o for o in options]
             opts[opts.index("-ab") + 1] = str(bounces)
-            out.append((label, files, opts + ["-al+"], rays, raypath, (REFERENCE_REPEATS, PATHS, CACHED)))
+            out.append((label, files, opts + ["-al+"], rays, raypath, (REFERENCE_REPEATS, PATHS, CACHED), None))
     _, files, options, _, raypath, _ = base["corridor, t = 120 s"]
+    view = ((10.3, 3, 1.6), (1, 0, 0), (0, 1, 0), (0, 0, 1))
     for albedo in (".2", ".8"):
         label = f"corridor picture {PICTURE[0]} x {PICTURE[1]}, t = 120 s, albedo {albedo}, -ab 1"
         if chosen and not any(c in label for c in chosen):
             continue
         opts = [o for o in options]
         opts[opts.index("-ab") + 1] = "1"
-        out.append((label, [files[0], pale] if albedo == ".8" else files, opts + ["-al+"],
-                    picture_rays((10.3, 3, 1.6), (1, 0, 0), (0, 1, 0), (0, 0, 1)), raypath,
-                    (PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED)))
+        rays, _ = picture_rays(*view)
+        case = (label, [files[0], pale] if albedo == ".8" else files, opts + ["-al+"], rays, raypath,
+                (PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED))
+        out.append(case + (None,))
+        big = label.replace(f"{PICTURE[0]} x {PICTURE[1]}", f"{PICTURE[0] * FINER} x {PICTURE[1] * FINER}")
+        out.append((big,) + case[1:5] + ((PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED[:1]),
+                                         picture_rays(*view, finer=FINER) + (FINER,)))
     return out
 
 
-def rtrace(bin_dir, tmp, case, repeats, extra, threads=1):
-    label, files, options, rays, raypath, _ = case
+def rtrace(bin_dir, tmp, case, repeats, extra, threads=1, rays=None):
+    label, files, options, case_rays, raypath = case[:5]
+    rays = rays or case_rays
     cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-n", str(threads)] + options + extra + files
     t = Timer(cmd, write_rays(tmp, rays, repeats), env=dict(os.environ, RAYPATH=f"{raypath}:{CORRIDOR}"))
     return luminances(t.out, repeats), t.cpu
+
+
+def extrapolated(paths, cached, own):
+    """Path tracing's time to the cache's least error, from its first rung as 1/√time (unbiased), both errors
+    with the reference's own taken out (independent: e² = e_true² + own²), against the cache's time there; the
+    table's rule above cannot see past the error path tracing reached."""
+    tc, ec = min(cached, key=lambda c: c[1])
+    (t1, e1), true_c = paths[0], (ec ** 2 - own ** 2)
+    if true_c <= 0 or e1 <= ec:
+        return "n/a"
+    tp = t1 * (e1 ** 2 - own ** 2) / true_c
+    return f"{100 * true_c ** .5:.2f} %: {tp:.0f} s / {tc:.0f} s = {tp / tc:.1f}x"
 
 
 def plot(series, png):
@@ -107,17 +136,31 @@ def main():
         return
     rows, series, summary = [], {}, []
     with tempfile.TemporaryDirectory() as tmp:
+        measured = {}  # the reference and path tracing's ladder of each case's rays, for the larger picture
         for case in cases(tmp, args.only):
-            label, (reference_repeats, path_repeats, cached_rungs) = case[0], case[5]
-            reference, ref_cpu = rtrace(args.bin, tmp, case, reference_repeats, ["-aa", "0", "-u+"], threads=2)
-            paths, cached = [], []
-            for r in path_repeats:
-                values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", "0", "-u+"])
-                paths.append((cpu, normalised_rms(values, reference)))
-                rows.append(f"| {label} | paths | {r} | {cpu:.2f} s | {100 * paths[-1][1]:.2f} % |")
-                print(f"  {label}, paths x{r}: {cpu:.2f} s, {100 * paths[-1][1]:.2f} %", file=sys.stderr)
+            label, (reference_repeats, path_repeats, cached_rungs), finer = case[0], case[5], case[6]
+            key = (tuple(case[1]), tuple(case[3]))
+            if key not in measured:
+                reference, _ = rtrace(args.bin, tmp, case, reference_repeats, ["-aa", "0", "-u+"], threads=2)
+                paths = []
+                for r in path_repeats:
+                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", "0", "-u+"])
+                    paths.append((cpu, normalised_rms(values, reference)))
+                measured[key] = reference, paths
+            reference, paths = measured[key]
+            scale = finer[2] ** 2 if finer else 1
+            paths = [(cpu * scale, e) for cpu, e in paths]
+            for r, (cpu, e) in zip(path_repeats, paths):
+                rows.append(f"| {label} | paths{' (x %d pixels)' % scale if finer else ''} | {r} | {cpu:.2f} s | "
+                            f"{100 * e:.2f} % |")
+                print(f"  {label}, paths x{r}: {cpu:.2f} s, {100 * e:.2f} %", file=sys.stderr)
+            cached = []
             for r, aa in cached_rungs:
-                values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"])
+                if finer:
+                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"], rays=finer[0])
+                    values = [values[k] for k in finer[1]]
+                else:
+                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"])
                 cached.append((cpu, normalised_rms(values, reference)))
                 rows.append(f"| {label} | cache -aa {aa} | {r} | {cpu:.2f} s | {100 * cached[-1][1]:.2f} % |")
                 print(f"  {label}, cache -aa {aa} x{r}: {cpu:.2f} s, {100 * cached[-1][1]:.2f} %", file=sys.stderr)
@@ -128,10 +171,12 @@ def main():
             tp, tc = time_to(paths, target), time_to(cached, target)
             ratio = f"{tp / tc:.1f}x" if tp and tc else "n/a"
             summary.append(f"| {label} | {100 * own:.2f} % | {100 * target:.2f} % | "
-                           f"{tp or float('nan'):.2f} s | {tc or float('nan'):.2f} s | {ratio} |")
+                           f"{tp or float('nan'):.2f} s | {tc or float('nan'):.2f} s | {ratio} | "
+                           f"{extrapolated(paths, cached, own)} |")
     text = (f"# Volume cache: time against error\n\nBrume {git_commit()}, one thread (bench/volume_cache.py; its "
             "docstring says what is measured).\n\n| case | reference's own error | at error | paths | cache | "
-            "cache sooner |\n|---|---|---|---|---|---|\n" + "\n".join(summary) +
+            "cache sooner | at the cache's least error, paths extrapolated |\n|---|---|---|---|---|---|---|\n" +
+            "\n".join(summary) +
             "\n\n| case | method | repeats | CPU | error |\n|---|---|---|---|---|\n" + "\n".join(rows) + "\n")
     png = f"{args.name}_time_vs_error.png"
     write_result(text, f"{args.name}.md", plot(series, os.path.join(RESULTS, png)), png)

@@ -10,12 +10,12 @@ namespace brume {
 
 constexpr int kMaxSamplePasses = 8;  // at most 8× -ad rays for one record
 
-// The passes (1 to kMaxSamplePasses) that bring a first pass's `relativeError` under `target`: the error
-// falls as 1/√passes.
-inline int samplePasses(double relativeError, double target) {
+// The passes (1 to `most`) that bring a first pass's `relativeError` under `target`: the error falls as
+// 1/√passes.
+inline int samplePasses(double relativeError, double target, int most = kMaxSamplePasses) {
     if (!(relativeError > target) || !(target > 0)) return 1;
     double ratio = relativeError / target;
-    return int(std::min(std::ceil(ratio * ratio), double(kMaxSamplePasses)));
+    return int(std::min(std::ceil(ratio * ratio), double(std::max(1, most))));
 }
 
 }  // namespace brume

@@ -45,9 +45,12 @@ double nearestSurface(const SphereSamples& s) {
     return nearest;
 }
 
-double zoneRadius(const SphereSamples& s, const VolumeRecord& record, const RecordShape& shape, double nearestSource) {
+double zoneRadius(const SphereSamples& s, const VolumeRecord& record, const RecordShape& shape, double nearestSource,
+                  double extinction) {
     const double eps = shape.accuracy;
-    const double reach = std::min(std::sqrt(eps) * nearestSource, nearestSurface(s));
+    // The transmittance to the light's sources changes by about e^(−σ_t δ) over a move δ: within ε at the edge.
+    const double reach =
+        std::min({std::sqrt(eps) * nearestSource, nearestSurface(s), eps / std::max(extinction, 1e-300)});
     if (shape.kind == RecordShape::Kind::Classic)
         return std::min(eps * std::clamp(s.harmonicMeanDistance(), shape.minRadius, shape.maxRadius),
                         std::max(reach, eps * shape.minRadius));
@@ -139,7 +142,7 @@ void addSourcePeaks(const SourceSamples& samples, VolumeRecord& r) {
 }  // namespace
 
 VolumeRecord buildVolumeRecord(const SphereSamples& s, const std::vector<SourceSamples>& sources,
-                               const RecordShape& shape, int level, double nearestSource) {
+                               const RecordShape& shape, int level, double nearestSource, double extinction) {
     VolumeRecord r;
     r.point = s.point();
     r.level = level;
@@ -167,7 +170,7 @@ VolumeRecord buildVolumeRecord(const SphereSamples& s, const std::vector<SourceS
     }
     for (size_t j = 0; j < sum.size(); ++j) r.values[j] = float(sum[j]);
     for (const SourceSamples& source : sources) addSourcePeaks(source, r);
-    r.radius = float(zoneRadius(s, r, shape, nearestSource));
+    r.radius = float(zoneRadius(s, r, shape, nearestSource, extinction));
     return r;
 }
 

@@ -25,10 +25,12 @@ namespace brume {
 // records'. Either way at most √ε times `nearestSource`, the distance to the nearest lamp (the light lamps
 // scatter in the medium around them, which a record holds, comes from about that far, not from the surfaces
 // the rays met, and varies over that scale: as an equivalent point source of all the record's light there,
-// 2Φ/D²), and never past the nearest surface the rays met (a wall between the point and a lookup may hide a
-// source from one and not the other). The record's instant is the caller's to set.
+// 2Φ/D²), never past the nearest surface the rays met (a wall between the point and a lookup may hide a
+// source from one and not the other), and at most ε / σ_t, σ_t the media's `extinction` at the point (moving
+// by δ changes the transmittance toward every source by about e^(−σ_t δ), which no peak follows). The record's
+// instant is the caller's to set.
 VolumeRecord buildVolumeRecord(const SphereSamples& samples, const std::vector<SourceSamples>& sources,
                                const RecordShape& shape, int level,
-                               double nearestSource = std::numeric_limits<double>::infinity());
+                               double nearestSource = std::numeric_limits<double>::infinity(), double extinction = 0);
 
 }  // namespace brume

@@ -243,3 +243,13 @@ TEST(VolumeRecords, ZonesFollowTheSourcesAndStopAtSurfaces) {
     EXPECT_LE(walled.radius, 0.05 * (1 + 1e-6));
     EXPECT_GT(walled.radius, 0);
 }
+
+// In a medium of extinction σ_t a zone reaches at most ε / σ_t: the transmittance toward the light changes by
+// about that share over it. Light from surfaces 10 m away alone would allow about 3 m.
+TEST(VolumeRecords, ZonesStayWithinATenthOfAMeanFreePath) {
+    RecordShape shape;
+    shape.minRadius = 1e-3, shape.maxRadius = 100;
+    auto far = samplesOf(dvec3(0), 256, [](auto, auto) { return 1.0; }, [](auto, auto) { return 10.0; });
+    EXPECT_GT(buildVolumeRecord(far, {}, shape, 0).radius, 0.9);
+    EXPECT_NEAR(buildVolumeRecord(far, {}, shape, 0, 1e300, 2.0).radius, shape.accuracy / 2, 1e-6);
+}

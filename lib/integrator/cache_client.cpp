@@ -118,17 +118,34 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
 VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
-    SphereSamples samples(q.at.point, recordDivisions(q), Spectrum::defaultChannels());
+    std::vector<SourceSamples> sources(scene_.lights().size());
     PathState child = recordRays(q, scratch);
+    double sourcesLight = 0;
+    for (size_t i = 0; i < sources.size(); ++i) {
+        lights_.arriving(scene_.lights()[i], q.at.point, sourceSamples(q), child, ctx, sources[i]);
+        for (const SourceSample& s : sources[i]) sourcesLight += brightness(s.flux);
+    }
+    SphereSamples samples(q.at.point, firstPassDivisions(q), Spectrum::defaultChannels());
     aimingFrom(child, q.at.point, dvec3(0), samples.strata(), false);
     tracePass(samples, 0, SurfaceId{}, child, ctx);
-    std::vector<SourceSamples> sources(scene_.lights().size());
-    for (size_t i = 0; i < sources.size(); ++i)
-        lights_.arriving(scene_.lights()[i], q.at.point, sourceSamples(q), child, ctx, sources[i]);
-    VolumeRecord record =
-        buildVolumeRecord(samples, sources, volumes_->kind().shape(), q.at.level, nearestSource(q.at.point));
+    int passes = volumePassesFor(samples, sourcesLight / (4 * std::numbers::pi), q.at.level);
+    for (int p = 1; p < passes; ++p) tracePass(samples, samples.addPass(), SurfaceId{}, child, ctx);
+    VolumeRecord record = buildVolumeRecord(samples, sources, volumes_->kind().shape(), q.at.level,
+                                            nearestSource(q.at.point), extinctionAt(q.at.point, child, ctx));
     record.time = q.at.time;
     return record;
+}
+
+double CacheClient::extinctionAt(const dvec3& p, const PathState& state, const PathContext& ctx) const {
+    HomogeneousMedium h = media_.homogeneousAlong(Ray{p, dvec3(0, 0, 1)}, nullptr, state);
+    return (h.extinction + ctx.smoke.smokeExtinction(p)).maxValue();
+}
+
+int CacheClient::volumePassesFor(const SphereSamples& first, double known, int level) const {
+    if (level > 0) return 1;
+    double light = first.meanBrightness() + known;
+    double target = kVolumeNoiseShare * settings_.ambientAccuracy;
+    return light > 0 ? samplePasses(first.meanStandardError() / light, target, kVolumePasses) : 1;
 }
 
 }  // namespace brume

@@ -2,6 +2,7 @@
 // points in media (noting the records they miss), and the rays a record is made of (a hemisphere's, a
 // sphere's).
 #pragma once
+#include "cache/sphere_samples.h"
 #include "cache/surface_cache.h"
 #include "cache/volume_cache.h"
 #include "integrator/hit_shading.h"
@@ -62,9 +63,8 @@ public:
     SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
     // A volume record: the radiance of rays stratified over the sphere, each continuing one bounce deeper, the
     // sources they meet left out as a surface record's rays leave them, and each source's light by
-    // sourceSamples of next-event estimation's shadow rays (LightSampler::arriving). One pass: the rays that
-    // look volume records up (view rays, record rays through a medium) gather many of them along their way,
-    // which averages their noise (more passes cost 3-6x in the corridor of make demo, for no smaller error).
+    // sourceSamples of next-event estimation's shadow rays (LightSampler::arriving). The sphere's rays come in
+    // passes of a quarter of -ad, as many as their standard error asks (volumePassesFor).
     VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
 private:
@@ -73,6 +73,18 @@ private:
     // where a view ray's in-scattering point takes one to four; a record's light is shared by the many
     // points in its zone).
     int sourceSamples(const RecordRequest& request) const { return std::max(8, recordDivisions(request) / 8); }
+    // A first-bounce volume record's first pass over the sphere: a quarter of its divisions (its passes make
+    // up the rest where they must); deeper records make one pass of all theirs.
+    int firstPassDivisions(const RecordRequest& request) const {
+        int divisions = recordDivisions(request);
+        return request.at.level == 0 ? std::max(kMinDivisions, divisions / kVolumePasses) : divisions;
+    }
+    static constexpr int kVolumePasses = 4;
+    // The standard error a first-bounce volume record's sphere aims for, relative to all its light (the
+    // sources' included: where a lamp gives most of a point's light, the rest's noise matters little), as a
+    // share of -aa. Looser than a surface record's: the rays that look volume records up (view rays, record
+    // rays through a medium) gather many along their way, which averages their noise.
+    static constexpr double kVolumeNoiseShare = 0.3;
     // The standard error a record's samples aim for, relative to its light, as a share of -aa: a record's
     // noise is not an error its zone's neighbours average out, as every lookup in the zone shares it. 1.5 %
     // at -aa .1: at -ad 1024 daylit rooms' records (1-1.4 %) take one or two passes, while those seeing
@@ -85,6 +97,9 @@ private:
     // one: a deeper record's noise reaches an answer averaged over the many records a first-bounce record's
     // rays meet.
     int passesFor(const HemisphereSamples& first, double known, int level) const;
+    // The same for a volume record's sphere: 1 to kVolumePasses, from its first pass and the brightness
+    // `known` of the sources' light (as a mean radiance over the sphere).
+    int volumePassesFor(const SphereSamples& first, double known, int level) const;
     // One ray per stratum of `samples`' pass `pass`, leaving `leaving`.
     template <class Samples>
     void tracePass(Samples& samples, int pass, const SurfaceId& leaving, const PathState& child,
@@ -97,6 +112,9 @@ private:
     // coefficient `coef`); true with value 0 when the item waits for it, false when the path samples on.
     bool waitsFor(const Receiver& at, const SurfaceId& surface, double pathWeight, const Spectrum& coef,
                   PathContext& ctx, Spectrum& value) const;
+    // The largest extinction coefficient of the media at p (of the mists a path of `state` is in, the global
+    // medium's and the smoke's).
+    double extinctionAt(const dvec3& p, const PathState& state, const PathContext& ctx) const;
     // The distance from p to the nearest lamp's surface (not less than its radius); infinite without lamps.
     double nearestSource(const dvec3& p) const;
 

@@ -138,6 +138,34 @@ TEST(CacheClient, ARecordInAUniformSurroundingHoldsPiL) {
     EXPECT_TRUE(next.requests.empty());
 }
 
+// A first-bounce volume record's sphere: a first pass of a quarter of -ad, then more passes where its rays'
+// standard error, against all the light, asks for them. In a uniform surrounding the strata agree (no error):
+// one pass, 256 / 4 rays (± 8: whole rows and columns), its mean L (1e-5). Where every other ray brings 0 or
+// 2L at random, the first pass's relative error is about 1/√64 = 12 %, four times and more the 3 % -aa .1
+// asks for: four passes in all, -ad rays. Deeper records make one pass of all their rays.
+TEST(CacheClient, AVolumeRecordsPassesFollowItsStandardError) {
+    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), false};
+    Parts parts(kFloor, cached(256), nullptr, &volumes);
+    RecordRequest q{Receiver{dvec3(0, 0, 1), std::nullopt, 0, 0.0}, SurfaceId{}, 1, 9};
+    auto rays = [&](int level) {
+        parts.tracer.rays.clear();
+        q.at.level = level;
+        CacheVisit visit;
+        VolumeRecord record = parts.cache.makeVolumeRecord(q, parts.scratch, visit);
+        return std::pair{double(parts.tracer.rays.size()), double(record.meanRadiance()[0])};
+    };
+    parts.tracer.value = Spectrum(kL);
+    auto [uniform, mean] = rays(0);
+    EXPECT_NEAR(uniform, 64, 8);
+    EXPECT_NEAR(mean, kL, 1e-5 * kL);
+    parts.tracer.byRay = [](const Ray& ray) {
+        double hash = std::sin(glm::dot(ray.dir, dvec3(12.9898, 78.233, 37.719)) * 43758.5453);
+        return Spectrum(hash - std::floor(hash) < 0.5 ? 0.f : 2 * kL);
+    };
+    EXPECT_NEAR(rays(0).first, 256, 32);
+    EXPECT_NEAR(rays(1).first, 256, 32);
+}
+
 // Radiance's -ad at the first bounce; deeper, scaled by the looking ray's weight, but never below 16 rays
 // (nor above -ad).
 TEST(CacheClient, RecordDivisionsScaleWithTheWeightBelowTheFirstBounce) {

@@ -74,8 +74,15 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
     if ((scatters || emits) && !answer) {
         // The sources' light scattered toward the ray, at a point drawn toward them (delta tracking's collision
         // would take it where it falls, and its 1/r² from a lamp nearby would be heavy-tailed); the rest of the
-        // light at that collision.
+        // light at delta tracking's collision, or behind it where tracking gets through. Where no collision
+        // adds light, the light behind by the exact transmittance instead: whether tracking got through, all
+        // or nothing, was most of the noise of a record's rays through thick smoke. (Not both where both shine:
+        // each ray would branch into two paths at every bounce.)
         Spectrum value = scatters ? inScattered(ray, start, end, h, state, ctx, Part::Sources) : Spectrum(0.f);
+        if (!collisionsShine(emits, state)) {
+            Spectrum through = smoke.transmittance(ray, start, end, h);
+            return through.isBlack() ? value : value + behind(through);
+        }
         std::vector<MajorantSegment> segments;
         smoke.majorants(ray, start, end, &h, segments);
         auto extinction = [&](double t) { return h.extinction + smoke.smokeExtinction(ray.org + t * ray.dir); };
@@ -107,11 +114,21 @@ Spectrum MediaTransport::along(const Ray& ray, const std::optional<SurfaceHit>& 
     return value;
 }
 
-// Radiance's rule for its in-scattering samples along a ray: one per -ms of length in the medium, 1 to 16.
-int MediaTransport::inScatteringSamples(double length) const {
+// Whether a collision along a drawn ray adds light: flames' where they glow, and scattering's while -ab bounces
+// remain, or past them a tail of paths (bounceTail) or -av.
+bool MediaTransport::collisionsShine(bool emits, const PathState& state) const {
+    bool beyond = state.ambientLevel >= settings_.ambientBounces;
+    return emits || !beyond || settings_.bounceTail() || !settings_.ambientValue.isBlack();
+}
+
+// Radiance's rule for its in-scattering samples along a ray: one per -ms of length in the medium, 1 to 16; or
+// up to 64 where volume records give their light (`cached`: a point costs a lookup there, not next-event
+// estimation and a path): in the corridor of make demo at 120 s (albedo .8, -ab 1, 40 x 30 rays), the
+// picture's error fell from 3.7-4.2 % to 2.1 % for 10 % more time; 128 gave no less.
+int MediaTransport::inScatteringSamples(double length, bool cached) const {
     double spacing = settings_.mediumSampling;
     if (!(spacing > 0)) return 1;
-    return int(std::clamp(std::round(length / spacing), 1.0, 16.0));
+    return int(std::clamp(std::round(length / spacing), 1.0, cached ? 64.0 : 16.0));
 }
 
 // ∫ T(t) σ_s(t) L_s(t) dt over [start, end] (the light scattered toward the ray's origin; of the sources
@@ -152,7 +169,8 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
     mixture.add(uniform, &even);
     mixture.add(mixed ? forced / 2 : forced, &near);
     if (mixed) mixture.add(forced / 2, &far);
-    int n = part == Part::All ? inScatteringSamples(even.length()) : 1;
+    bool cached = cache_.volumes() && state.ambientLevel < settings_.ambientBounces;
+    int n = part == Part::All ? inScatteringSamples(even.length(), cached) : 1;
     Spectrum sum(0.f), tr(1.f);  // the transmittance from `start` to `reached`, carried from point to point
     double t = -std::numeric_limits<double>::infinity(), reached = start;
     for (int k = 0; k < n; ++k) {

@@ -90,7 +90,8 @@ TEST(MediaTransport, PrimaryRayInAScatteringMediumGetsTheWallAndTheInScatteredLi
 // A sampled ray takes delta tracking's first collision (scattering a of the surrounding, by one drawn ray
 // that leaves out the sources: there are none here, and next-event estimation at a point of its own has
 // nothing to find) or, with probability e^{−σd}, the wall: unbiased. Mean of 4000 rays within 4 standard
-// errors, and the fraction reaching the wall within 4 binomial standard deviations.
+// errors, and the fraction reaching the wall within 4 binomial standard deviations. Past -ab bounces with
+// nothing beyond them (-al+), no collision adds light: no tracking, the wall by its exact e^{−σd} (1e-5).
 TEST(MediaTransport, SampledRayTakesACollisionOrTheWallWithoutBias) {
     Parts parts(kWall, medium(0.6));
     ToTheWall ray(parts);
@@ -101,6 +102,14 @@ TEST(MediaTransport, SampledRayTakesACollisionOrTheWallWithoutBias) {
     EXPECT_NEAR(reached, p, 4 * std::sqrt(p * (1 - p) / 4000));
     EXPECT_EQ(parts.tracer.surfaceRays.size() + parts.tracer.rays.size(), 4000u);
     for (const AskedRay& r : parts.tracer.rays) EXPECT_EQ(r.state.kind, PathState::Kind::Sampled);
+
+    RenderSettings limited = medium(0.6, 0);
+    limited.ambientLimit = true;
+    Parts past(kWall, limited);
+    ToTheWall last(past);
+    EXPECT_NEAR(last.along(PathState::Kind::Sampled, 1), kL * std::exp(-kSigma * kD), 1e-5 * kL);
+    EXPECT_TRUE(past.tracer.rays.empty());
+    EXPECT_EQ(past.tracer.surfaceRays.size(), 1u);
 }
 
 // A lamp beside the ray, and nothing else lit: a sampled ray takes the lamp's light scattered along it at a

@@ -26,7 +26,8 @@ struct AskedRay {
 
 // Every ray brings `value`: the radiance of a uniform surrounding, of surfaces 1 away (a record's zone needs
 // distances). Rays that may meet sources (those given a sourceShare) also bring `share` there, as a source's
-// multiple-importance share would. The rays asked about are kept, by kind of question.
+// multiple-importance share would; `byRay`, where set, answers radiance() in place of `value`. The rays asked
+// about are kept, by kind of question.
 class ConstantTracer final : public Tracer {
 public:
     explicit ConstantTracer(const Spectrum& value) : value(value) {}
@@ -36,7 +37,7 @@ public:
         rays.push_back({ray, state});
         if (record) record->firstLength = record->effectiveLength = 1;
         if (sourceShare) *sourceShare += share;
-        return value;
+        return byRay ? byRay(ray) : value;
     }
     Spectrum surfaceRadiance(const Ray& ray, const std::optional<SurfaceHit>&, const PathState& state, PathContext&,
                              Spectrum*) const override {
@@ -51,6 +52,7 @@ public:
 
     Spectrum value;
     Spectrum share{0.f};
+    std::function<Spectrum(const Ray&)> byRay;
     mutable std::vector<AskedRay> rays, surfaceRays, sampledRays;
 };
 
