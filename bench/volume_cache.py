@@ -12,11 +12,16 @@ Scenes (those of bench/smoke.py, with indirect light):
             centres, against the same reference, and whose path tracing costs 16 times the smaller one's (the
             same paths per pixel, 16 times the pixels), at -aa .1 only: a picture of a useful size shares its
             records among more pixels.
+  sensors   a grid of 50 x 10 sensors at 0.8 m over the corridor's floor (10 cm along it, 20 cm across), facing up,
+            t = 120 s, albedo .2 and .8, rtrace -I -ab 3: illuminance for a building code, through the smoke; as
+            the pictures (32 reference repeats, path tracing x1 and x4, the cache at -aa .1 and .05 once).
 At -ab 1 and -ab 3, with -al+ (nothing past -ab bounces, so that path tracing and the cache estimate the same
 light). Path tracing (-aa 0) repeats each ray r = 1, 4, 16, 64 times; the cache (-aa .1, and .05 at the last
 rung) traces the 48 rays r = 1, 4, 16 times in one run, its records shared by all of them (as a picture's are by
 its pixels). Each ray's mean against a reference of REFERENCE_REPEATS path-traced repeats (two threads); error:
-the RMS over the rays over the mean reference luminance (bench/smoke.py's). One thread, CPU seconds. The time
+the RMS over the rays over the mean reference luminance (bench/smoke.py's); also the 99.9th percentile of the
+rays' errors over that RMS (splotches: a tail far beyond normal errors' 3.3; of 48 rays, the largest) and the size
+of the cache's -af file (its records). One thread, CPU seconds. The time
 to an error is interpolated along each ladder in log-log (bench.time_to); "sooner" is path tracing's time over
 the cache's at the smallest error both reach.
 Writes results/NAME.md and results/NAME_time_vs_error.png (NAME volume_cache unless --name says otherwise).
@@ -41,6 +46,7 @@ PICTURE_REFERENCE_REPEATS = 32
 PICTURE_PATHS = [1, 4]
 PICTURE_CACHED = [(1, ".1"), (1, ".05")]
 FINER = 4  # the larger picture's pixels across one of PICTURE's
+SENSORS = [(10.05 + 0.1 * i, 2.1 + 0.2 * j, 0.8, 0, 0, 1) for i in range(50) for j in range(10)]
 
 
 def picture_rays(eye, forward, right, up, finer=1):
@@ -97,15 +103,35 @@ def cases(tmp, chosen):
         big = label.replace(f"{PICTURE[0]} x {PICTURE[1]}", f"{PICTURE[0] * FINER} x {PICTURE[1] * FINER}")
         out.append((big,) + case[1:5] + ((PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED[:1]),
                                          picture_rays(*view, finer=FINER) + (FINER,)))
+    for albedo in (".2", ".8"):
+        label = f"corridor sensors {len(SENSORS)} at 0.8 m, t = 120 s, albedo {albedo}, -I -ab 3"
+        if chosen and not any(c in label for c in chosen):
+            continue
+        opts = [o for o in options]
+        opts[opts.index("-ab") + 1] = "3"
+        out.append((label, [files[0], pale] if albedo == ".8" else files, ["-I"] + opts + ["-al+"], SENSORS, raypath,
+                    (PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED), None))
     return out
 
 
-def rtrace(bin_dir, tmp, case, repeats, extra, threads=1, rays=None):
+def rtrace(bin_dir, tmp, case, repeats, extra, threads=1, rays=None, cache_file=None):
+    """The rays' luminances and the CPU time; with cache_file, the records are written there (anew)."""
     label, files, options, case_rays, raypath = case[:5]
     rays = rays or case_rays
+    if cache_file:
+        if os.path.exists(cache_file):
+            os.remove(cache_file)
+        extra = extra + ["-af", cache_file]
     cmd = [os.path.join(bin_dir, "rtrace"), "-h", "-n", str(threads)] + options + extra + files
     t = Timer(cmd, write_rays(tmp, rays, repeats), env=dict(os.environ, RAYPATH=f"{raypath}:{CORRIDOR}"))
     return luminances(t.out, repeats), t.cpu
+
+
+def tail(values, reference):
+    """The 99.9th percentile of |value - reference| over the mean reference, over their RMS (normalised_rms)."""
+    mean = sum(reference) / len(reference)
+    errors = sorted(abs(v - r) / mean for v, r in zip(values, reference))
+    return errors[min(len(errors) - 1, int(0.999 * len(errors)))] / normalised_rms(values, reference)
 
 
 def extrapolated(paths, cached, own):
@@ -145,25 +171,31 @@ def main():
                 paths = []
                 for r in path_repeats:
                     values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", "0", "-u+"])
-                    paths.append((cpu, normalised_rms(values, reference)))
+                    paths.append((cpu, normalised_rms(values, reference), tail(values, reference)))
                 measured[key] = reference, paths
             reference, paths = measured[key]
             scale = finer[2] ** 2 if finer else 1
-            paths = [(cpu * scale, e) for cpu, e in paths]
-            for r, (cpu, e) in zip(path_repeats, paths):
+            tails = [t for _, _, t in paths]
+            paths = [(cpu * scale, e) for cpu, e, _ in paths]
+            for r, (cpu, e), t in zip(path_repeats, paths, tails):
+                extra = f", 99.9th percentile {t:.1f}x"
                 rows.append(f"| {label} | paths{' (x %d pixels)' % scale if finer else ''} | {r} | {cpu:.2f} s | "
-                            f"{100 * e:.2f} % |")
+                            f"{100 * e:.2f} %{extra} |")
                 print(f"  {label}, paths x{r}: {cpu:.2f} s, {100 * e:.2f} %", file=sys.stderr)
             cached = []
             for r, aa in cached_rungs:
+                af = os.path.join(tmp, "records.af")
                 if finer:
-                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"], rays=finer[0])
+                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"], rays=finer[0], cache_file=af)
                     values = [values[k] for k in finer[1]]
                 else:
-                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"])
+                    values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", aa, "-u+"], cache_file=af)
                 cached.append((cpu, normalised_rms(values, reference)))
-                rows.append(f"| {label} | cache -aa {aa} | {r} | {cpu:.2f} s | {100 * cached[-1][1]:.2f} % |")
-                print(f"  {label}, cache -aa {aa} x{r}: {cpu:.2f} s, {100 * cached[-1][1]:.2f} %", file=sys.stderr)
+                extra = (f", 99.9th percentile {tail(values, reference):.1f}x, "
+                         f"records {os.path.getsize(af) / 1e6:.1f} MB")
+                rows.append(f"| {label} | cache -aa {aa} | {r} | {cpu:.2f} s | {100 * cached[-1][1]:.2f} %{extra} |")
+                print(f"  {label}, cache -aa {aa} x{r}: {cpu:.2f} s, {100 * cached[-1][1]:.2f} %{extra}",
+                      file=sys.stderr)
             series[f"{label}: paths"], series[f"{label}: cache"] = paths, cached
             # The reference's own error: path tracing's at its last rung scaled by √(repeats there / reference's).
             own = paths[-1][1] * (path_repeats[-1] / reference_repeats) ** .5

@@ -1,0 +1,211 @@
+#include "fds/fds_quantity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <glm/common.hpp>
+
+#include "fds/slice_file.h"
+#include "fds/smoke3d_file.h"
+#include "util/error.h"
+
+namespace brume {
+
+namespace {
+
+// FDS's default mass extinction coefficient of soot (m²/kg), for 3D smoke files whose entry does not give one.
+constexpr double kSootMassExtinction = 8700;
+
+bool fileExists(const std::string& path) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+
+// Cell widths of a mesh along each axis; Error where they are not all equal (a stretched mesh).
+glm::dvec3 uniformSpacing(const SmvIndex& smv, int mesh) {
+    const FdsMesh& m = smv.meshes[size_t(mesh)];
+    glm::dvec3 d;
+    for (int a = 0; a < 3; ++a) {
+        const std::vector<double>& n = m.nodes[a];
+        d[a] = (n.back() - n.front()) / double(n.size() - 1);
+        for (size_t i = 0; i < n.size(); ++i)
+            if (std::abs(n[i] - (n.front() + double(i) * d[a])) > 1e-4 * d[a] + 1e-5)  // the .smv prints 5 decimals
+                throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " (" + m.id +
+                            ") is stretched: only meshes of even cells are imported");
+    }
+    return d;
+}
+
+// Which frames of a file to keep: all without `instants`, else for each instant the last at or before it and the
+// first at or after it. `read(wanted)` reads the file keeping what `wanted` says: a first pass, keeping
+// nothing, lists the frames' times.
+template <typename Read>
+std::function<bool(double)> framesAround(const std::vector<double>& instants, Read read) {
+    if (instants.empty()) return nullptr;
+    std::vector<double> times;
+    read([&](double t) { return times.push_back(t), false; });
+    std::vector<double> keep;
+    for (double instant : instants) {
+        auto later = std::lower_bound(times.begin(), times.end(), instant);
+        if (later != times.end()) keep.push_back(*later);
+        if (later != times.begin() && (later == times.end() || *later != instant)) keep.push_back(*std::prev(later));
+    }
+    return [keep](double t) { return std::find(keep.begin(), keep.end(), t) != keep.end(); };
+}
+
+}  // namespace
+
+FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants) {
+    auto volumeSlice = [&](const FdsFile& f) {
+        return f.kind == FdsFile::Kind::Slice && f.cellCentred && f.volume() && f.quantity == quantity;
+    };
+    auto smoke3d = [&](const FdsFile& f) { return f.kind == FdsFile::Kind::Smoke3d && f.quantity == quantity; };
+    bool slices = std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
+        return volumeSlice(f) && fileExists(f.path);
+    });
+    bool soot3d = !slices && quantity == "SOOT DENSITY" &&
+                  std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
+                      return smoke3d(f) && fileExists(f.path);
+                  });
+    if (!slices && !soot3d) {
+        std::string have;
+        for (const FdsFile& f : smv.files)
+            if ((f.kind == FdsFile::Kind::Smoke3d || (f.cellCentred && f.volume())) && fileExists(f.path) &&
+                have.find("'" + f.quantity + "'") == std::string::npos)
+                have += (have.empty() ? "" : ", ") + ("'" + f.quantity + "'");
+        throw Error(smv.path + ": no cell-centred 3D slice" + (quantity == "SOOT DENSITY" ? " or 3D smoke file" : "") +
+                    " of '" + quantity + "' (the case has " + (have.empty() ? "none of either" : have) + ")");
+    }
+    source_ = slices ? "cell-centred 3D slices" : "3D smoke files (8-bit opacities)";
+    std::vector<bool> covered(smv.meshes.size());
+    for (const FdsFile& f : smv.files) {
+        if (!(slices ? volumeSlice(f) : smoke3d(f)) || covered[size_t(f.mesh)]) continue;
+        if (!fileExists(f.path)) {
+            warnings_.push_back(f.path + ": listed in " + smv.path + " but absent");
+            continue;
+        }
+        if (slices) addSlice(smv, f, instants);
+        else addSmoke3d(smv, f, instants);
+        covered[size_t(f.mesh)] = true;
+        if (units_.empty()) units_ = f.units;
+    }
+    for (size_t m = 0; m < covered.size(); ++m)
+        if (!covered[m])
+            warnings_.push_back(smv.path + ": mesh " + std::to_string(m + 1) + " (" + smv.meshes[m].id + ") has no " +
+                                source_ + " of '" + quantity + "': it is left empty");
+    if (units_ == "C") units_ = "K", offset_ = 273.15;
+    times_ = meshes_.front().times;
+    if (times_.empty()) throw Error(smv.path + ": the files of '" + quantity + "' hold no frames");
+}
+
+glm::ivec3 FdsQuantity::place(const SmvIndex& smv, int mesh, const glm::dvec3& p) {
+    glm::dvec3 spacing = uniformSpacing(smv, mesh);
+    if (meshes_.empty()) origin_ = p, spacing_ = spacing;
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(spacing[a] - spacing_[a]) > 1e-4 * spacing_[a])
+            throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " has cells of " + std::to_string(spacing[a]) +
+                        " m where the first has " + std::to_string(spacing_[a]) +
+                        " m: meshes of different resolutions are not imported yet");
+    glm::dvec3 index = (p - origin_) / spacing_;
+    glm::dvec3 rounded = glm::round(index);
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(index[a] - rounded[a]) > 1e-3 || std::abs(rounded[a]) > 1e8)
+            throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " is not on the lattice of the first mesh's cells");
+    return glm::ivec3(rounded);
+}
+
+// A cell-centred slice's first index along each axis is a ghost cell outside the range (FDS's dump.f90): the
+// cells are those after it, cell i centred between nodes i − 1 and i.
+void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
+    SliceFile s = readSlice(f.path, framesAround(instants, [&](const Wanted& w) { readSlice(f.path, w); }));
+    if (s.range != f.range) throw Error(f.path + ": its index range is not the one " + smv.path + " lists");
+    if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
+    const FdsMesh& m = smv.meshes[size_t(f.mesh)];
+    glm::ivec3 lo(f.range[0], f.range[2], f.range[4]), all(f.range[1] - f.range[0] + 1, f.range[3] - f.range[2] + 1,
+                                                             f.range[5] - f.range[4] + 1);
+    MeshFrames frames;
+    frames.size = all - 1;
+    glm::dvec3 centre;
+    for (int a = 0; a < 3; ++a) centre[a] = 0.5 * (m.nodes[a][size_t(lo[a])] + m.nodes[a][size_t(lo[a] + 1)]);
+    frames.first = place(smv, f.mesh, centre);
+    for (SliceFrame& frame : s.frames) {
+        frames.times.push_back(frame.time);
+        std::vector<float> cells;
+        cells.reserve(size_t(frames.size.x) * size_t(frames.size.y) * size_t(frames.size.z));
+        for (int k = 1; k < all.z; ++k)
+            for (int j = 1; j < all.y; ++j)
+                for (int i = 1; i < all.x; ++i) cells.push_back(frame.values[size_t(i + all.x * (j + all.y * k))]);
+        frames.values.push_back(std::move(cells));
+    }
+    meshes_.push_back(std::move(frames));
+}
+
+void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
+    const FdsMesh& m = smv.meshes[size_t(f.mesh)];
+    Smoke3dFile s =
+        readSmoke3d(f.path, m.cells, framesAround(instants, [&](const Wanted& w) { readSmoke3d(f.path, m.cells, w); }));
+    if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
+    double km = f.massExtinction;
+    if (!(km > 0)) {
+        km = kSootMassExtinction;
+        warnings_.push_back(f.path + ": no mass extinction coefficient in " + smv.path + ": FDS's default 8700 m2/kg");
+    }
+    const double dx = m.nodes[0][1] - m.nodes[0][0];  // FDS encodes every node with its mesh's first cell width
+    MeshFrames frames;
+    frames.size = m.cells + 1;
+    frames.first = place(smv, f.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+    float density[256];
+    for (int b = 0; b < 256; ++b) density[b] = float(sootDensity(b, km, dx));
+    for (Smoke3dFrame& frame : s.frames) {
+        frames.times.push_back(frame.time);
+        std::vector<float> nodes(frame.bytes.size());
+        for (size_t i = 0; i < nodes.size(); ++i) nodes[i] = density[frame.bytes[i]];
+        frames.values.push_back(std::move(nodes));
+    }
+    meshes_.push_back(std::move(frames));
+}
+
+LatticeVoxels FdsQuantity::at(double time) const {
+    glm::ivec3 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
+    for (const MeshFrames& m : meshes_) lo = glm::min(lo, m.first), hi = glm::max(hi, m.first + m.size);
+    glm::ivec3 size = hi - lo;
+    // Sums and counts: meshes share the nodes on their common faces (3D smoke files), where both give a value.
+    std::vector<float> sum(size_t(size.x) * size_t(size.y) * size_t(size.z));
+    std::vector<std::uint8_t> count(sum.size());
+    for (const MeshFrames& m : meshes_) {
+        if (m.times.empty() || time < m.times.front() || time > m.times.back())
+            throw Error("no frame at " + std::to_string(time) + " s: the files hold " +
+                        (m.times.empty() ? std::string("none") : std::to_string(m.times.front()) + " to " +
+                                                                     std::to_string(m.times.back()) + " s"));
+        size_t later = size_t(std::upper_bound(m.times.begin(), m.times.end(), time) - m.times.begin());
+        size_t before = later == 0 ? 0 : later - 1;
+        later = std::min(later, m.times.size() - 1);
+        float w = later == before ? 0.f : float((time - m.times[before]) / (m.times[later] - m.times[before]));
+        const std::vector<float>&a = m.values[before], &b = m.values[later];
+        size_t n = 0;
+        for (int k = 0; k < m.size.z; ++k)
+            for (int j = 0; j < m.size.y; ++j)
+                for (int i = 0; i < m.size.x; ++i, ++n) {
+                    glm::ivec3 v = m.first + glm::ivec3(i, j, k) - lo;
+                    size_t at = size_t(v.x) + size_t(size.x) * (size_t(v.y) + size_t(size.y) * size_t(v.z));
+                    sum[at] += (1 - w) * a[n] + w * b[n];
+                    ++count[at];
+                }
+    }
+    LatticeVoxels out;
+    out.origin = origin_;
+    out.spacing = spacing_;
+    size_t n = 0;
+    for (int k = 0; k < size.z; ++k)
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i, ++n)
+                if (count[n] > 0) {
+                    float v = sum[n] / float(count[n]) + float(offset_);
+                    if (v != 0) out.values.push_back({lo + glm::ivec3(i, j, k), v});
+                }
+    return out;
+}
+
+}  // namespace brume

@@ -1,0 +1,62 @@
+// One quantity of an FDS case (soot density, temperature, …) over all its meshes and output instants, as
+// voxels of one lattice: what an OpenVDB grid holds. From the best files the case has for it: cell-centred 3D
+// slices (the cells' own values, as FDS computed them), else for soot density the 3D smoke files (node values,
+// 8-bit opacities: ±0.02 /m of extinction at 0.1 m cells, smoke_file.h).
+#pragma once
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "fds/smv_index.h"
+
+namespace brume {
+
+// Voxel (i, j, k) is centred at origin + (i, j, k) · spacing (world metres); voxels not listed hold 0.
+struct LatticeVoxels {
+    glm::dvec3 origin{0}, spacing{0};
+    std::vector<std::pair<glm::ivec3, float>> values;
+};
+
+class FdsQuantity {
+public:
+    // The meshes' files of `quantity` (a long label as the .smv has it, e.g. "SOOT DENSITY") in the index `smv`:
+    // the frames around each of `instants` (seconds), or all frames if none are given. Temperatures in °C become
+    // kelvin. Throws Error "smv: …" where no file has the quantity (naming those that the case has), meshes are
+    // not on one lattice (different or stretched cells), or a file cannot be read.
+    FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants = {});
+
+    // The instants of the first mesh's frames that were read (seconds).
+    const std::vector<double>& times() const { return times_; }
+    // The voxels at `time`, linear in time between the frames around it; Error if a mesh has no frames around
+    // it.
+    LatticeVoxels at(double time) const;
+    // The units of the values (kg/m3, K, …) and where they came from, for headers and messages.
+    const std::string& units() const { return units_; }
+    const std::string& source() const { return source_; }
+    // What the caller should tell the user (meshes without the quantity, a truncated file, …).
+    const std::vector<std::string>& warnings() const { return warnings_; }
+
+private:
+    struct MeshFrames {
+        glm::ivec3 first{0}, size{0};           // the lattice index of its first value, and its values per axis
+        std::vector<double> times;
+        std::vector<std::vector<float>> values;  // per frame, over size, x fastest
+    };
+    using Wanted = std::function<bool(double)>;
+    void addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
+    void addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
+    // The lattice index of world point p, which must be a voxel centre (of the lattice set by the first mesh).
+    glm::ivec3 place(const SmvIndex& smv, int mesh, const glm::dvec3& p);
+
+    std::vector<MeshFrames> meshes_;
+    std::vector<double> times_;
+    glm::dvec3 origin_{0}, spacing_{0};
+    std::string units_, source_;
+    double offset_ = 0;  // added to every value: 273.15 for °C
+    std::vector<std::string> warnings_;
+};
+
+}  // namespace brume
