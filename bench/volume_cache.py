@@ -65,6 +65,13 @@ def picture_rays(eye, forward, right, up, finer=1):
     return rays, [coarse[(j, i)] for j in range(h) for i in range(w)]
 
 
+def with_bounces(options, bounces):
+    """The options with -ab set to `bounces`, and -al+."""
+    opts = list(options)
+    opts[opts.index("-ab") + 1] = str(bounces)
+    return opts + ["-al+"]
+
+
 def cases(tmp, chosen):
     """(name, files, options, rays, RAYPATH, ladders, finer) per measured case and -ab; ladders: (reference
     repeats, path tracing's repeats, the cache's (repeats, -aa)); finer: None, or for the larger picture (its
@@ -85,19 +92,16 @@ def cases(tmp, chosen):
             label = f"{name}{', albedo ' + albedo if albedo else ''}, -ab {bounces}"
             if chosen and not any(c in label for c in chosen):
                 continue
-            opts = [o for o in options]
-            opts[opts.index("-ab") + 1] = str(bounces)
-            out.append((label, files, opts + ["-al+"], rays, raypath, (REFERENCE_REPEATS, PATHS, CACHED), None))
+            out.append((label, files, with_bounces(options, bounces), rays, raypath, (REFERENCE_REPEATS, PATHS, CACHED),
+                        None))
     _, files, options, _, raypath, _ = base["corridor, t = 120 s"]
     view = ((10.3, 3, 1.6), (1, 0, 0), (0, 1, 0), (0, 0, 1))
     for albedo in (".2", ".8"):
         label = f"corridor picture {PICTURE[0]} x {PICTURE[1]}, t = 120 s, albedo {albedo}, -ab 1"
         if chosen and not any(c in label for c in chosen):
             continue
-        opts = [o for o in options]
-        opts[opts.index("-ab") + 1] = "1"
         rays, _ = picture_rays(*view)
-        case = (label, [files[0], pale] if albedo == ".8" else files, opts + ["-al+"], rays, raypath,
+        case = (label, [files[0], pale] if albedo == ".8" else files, with_bounces(options, 1), rays, raypath,
                 (PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED))
         out.append(case + (None,))
         big = label.replace(f"{PICTURE[0]} x {PICTURE[1]}", f"{PICTURE[0] * FINER} x {PICTURE[1] * FINER}")
@@ -107,10 +111,8 @@ def cases(tmp, chosen):
         label = f"corridor sensors {len(SENSORS)} at 0.8 m, t = 120 s, albedo {albedo}, -I -ab 3"
         if chosen and not any(c in label for c in chosen):
             continue
-        opts = [o for o in options]
-        opts[opts.index("-ab") + 1] = "3"
-        out.append((label, [files[0], pale] if albedo == ".8" else files, ["-I"] + opts + ["-al+"], SENSORS, raypath,
-                    (PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED), None))
+        out.append((label, [files[0], pale] if albedo == ".8" else files, ["-I"] + with_bounces(options, 3), SENSORS,
+                    raypath, (PICTURE_REFERENCE_REPEATS, PICTURE_PATHS, PICTURE_CACHED), None))
     return out
 
 
