@@ -80,8 +80,7 @@ void printOptics(const SmvIndex& smv, const std::string& units) {
     } else if (units != "1/m") {
         warn("values in " + units + " are no density: the smoke object's extinction per unit (1) is to be set");
     }
-    std::printf("\n0\n# extinction per unit, albedo and g (soot scatters about a fifth of what it takes, forward):\n");
-    std::printf("7 %g %g %g  .2 .2 .2  .6\n", k, k, k);
+    std::printf("\n0\n7 %g %g %g  .2 .2 .2  .6\n", k, k, k);
 }
 
 void warnAll(const std::vector<std::string>& warnings) {
@@ -120,7 +119,9 @@ int run(int argc, char** argv) {
     }
     std::vector<std::string> command(argv, argv + argc);
     command[0] = programName();
-    std::printf("# %s\n# '%s' (%s) of %s from its %s\n", commandLine(command).c_str(), o.quantity.c_str(),
+    std::printf("# %s\n# '%s' (%s) of %s from its %s\n"
+                "# extinction per unit, albedo and g: soot scatters about a fifth of what it takes, forward\n",
+                commandLine(command).c_str(), o.quantity.c_str(),
                 quantity.units().c_str(), smvPath.c_str(), quantity.source().c_str());
     std::printf("void smoke %s\n%zu%s", prefix.substr(prefix.find_last_of('/') + 1).c_str(),
                 (files.size() == 1 ? 1 : 2 * files.size()) + (o.flames ? 1 : 0), o.flames ? " temperature=temperature" : "");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -38,16 +39,26 @@ glm::dvec3 uniformSpacing(const SmvIndex& smv, int mesh) {
     return d;
 }
 
+std::string seconds(double t) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g s", t);
+    return text;
+}
+
 // Which frames of a file to keep: all without `instants`, else for each instant the last at or before it and the
 // first at or after it. `read(wanted)` reads the file keeping what `wanted` says: a first pass, keeping
 // nothing, lists the frames' times.
+// Error "path: …" where an instant lies outside the file's frames.
 template <typename Read>
-std::function<bool(double)> framesAround(const std::vector<double>& instants, Read read) {
+std::function<bool(double)> framesAround(const std::vector<double>& instants, const std::string& path, Read read) {
     if (instants.empty()) return nullptr;
     std::vector<double> times;
     read([&](double t) { return times.push_back(t), false; });
     std::vector<double> keep;
     for (double instant : instants) {
+        if (times.empty() || instant < times.front() || instant > times.back())
+            throw Error(path + ": no frame around " + seconds(instant) + ": the file holds " +
+                        (times.empty() ? "none" : seconds(times.front()) + " to " + seconds(times.back())));
         auto later = std::lower_bound(times.begin(), times.end(), instant);
         if (later != times.end()) keep.push_back(*later);
         if (later != times.begin() && (later == times.end() || *later != instant)) keep.push_back(*std::prev(later));
@@ -119,7 +130,7 @@ glm::ivec3 FdsQuantity::place(const SmvIndex& smv, int mesh, const glm::dvec3& p
 // A cell-centred slice's first index along each axis is a ghost cell outside the range (FDS's dump.f90): the
 // cells are those after it, cell i centred between nodes i − 1 and i.
 void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
-    SliceFile s = readSlice(f.path, framesAround(instants, [&](const Wanted& w) { readSlice(f.path, w); }));
+    SliceFile s = readSlice(f.path, framesAround(instants, f.path, [&](const Wanted& w) { readSlice(f.path, w); }));
     if (s.range != f.range) throw Error(f.path + ": its index range is not the one " + smv.path + " lists");
     if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
     const FdsMesh& m = smv.meshes[size_t(f.mesh)];
@@ -145,7 +156,7 @@ void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vec
 void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
     const FdsMesh& m = smv.meshes[size_t(f.mesh)];
     Smoke3dFile s =
-        readSmoke3d(f.path, m.cells, framesAround(instants, [&](const Wanted& w) { readSmoke3d(f.path, m.cells, w); }));
+        readSmoke3d(f.path, m.cells, framesAround(instants, f.path, [&](const Wanted& w) { readSmoke3d(f.path, m.cells, w); }));
     if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
     double km = f.massExtinction;
     if (!(km > 0)) {

@@ -25,10 +25,11 @@ public:
     // The meshes' files of `quantity` (a long label as the .smv has it, e.g. "SOOT DENSITY") in the index `smv`:
     // the frames around each of `instants` (seconds), or all frames if none are given. Temperatures in °C become
     // kelvin. Throws Error "smv: …" where no file has the quantity (naming those that the case has), meshes are
-    // not on one lattice (different or stretched cells), or a file cannot be read.
+    // not on one lattice (different or stretched cells), or "file: …" where a file cannot be read or has no
+    // frames around an instant.
     FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants = {});
 
-    // The instants of the first mesh's frames that were read (seconds).
+    // The instants of the first mesh's frames that were read (seconds): with instants given, only those around them.
     const std::vector<double>& times() const { return times_; }
     // The voxels at `time`, linear in time between the frames around it; Error if a mesh has no frames around
     // it.

@@ -26,4 +26,7 @@ inline std::string sharedCase() {
     return std::filesystem::exists(dir / "model.smv") ? dir.string() : std::string();
 }
 
+// test/data/fds/two_mesh_smoke: a small FDS 6.9.0 case of two meshes (its README says how it was made).
+inline std::string twoMeshCase() { return std::string(BRUME_TEST_DATA) + "/fds/two_mesh_smoke"; }
+
 }  // namespace brume::fds_test
