@@ -109,7 +109,8 @@ int run(int argc, char** argv) {
     for (double t : instants) {
         char name[64];
         std::snprintf(name, sizeof name, "_%08.3f.vdb", t);
-        openvdb::GridPtrVec grids{gridOf(quantity.at(t), "density")};
+        openvdb::GridPtrVec grids;
+        grids.push_back(gridOf(quantity.at(t), "density"));
         if (temperature) grids.push_back(gridOf(temperature->at(t), "temperature"));
         const std::string path = prefix + name;
         const std::string part = path + ".part";  // a file half written is never taken for a whole one

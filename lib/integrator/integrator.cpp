@@ -317,4 +317,10 @@ Spectrum Integrator::sampledRadiance(const dvec3& from, const SurfaceId& surface
     return li + emission;
 }
 
+Spectrum Integrator::transmittanceBetween(const dvec3& from, const dvec3& to, double time) const {
+    double distance = glm::length(to - from);
+    if (!media_.present() || !(distance > 0)) return Spectrum(1.f);
+    return media_.clearTransmittance(Ray(from, (to - from) / distance), distance, PathState{}, media_.smokeAt(time));
+}
+
 }  // namespace brume

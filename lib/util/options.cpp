@@ -16,6 +16,10 @@ void OptionTable::add(const std::string& name, int count, const std::string& hel
     options_.push_back({name, Kind::Separate, count, help, std::move(apply), std::move(current)});
 }
 
+void OptionTable::remove(const std::string& name) {
+    std::erase_if(options_, [&](const Option& o) { return o.name == name; });
+}
+
 void addIntOption(OptionTable& t, const std::string& name, int& v, const std::string& help) {
     t.add(name, 1, help, [&v, name](const auto& a) { v = toInt(name, a[0]); }, [&v] { return std::to_string(v); });
 }

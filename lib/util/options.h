@@ -31,6 +31,9 @@ public:
     void addAttached(const std::string& name, const std::string& help, std::function<void(const std::string&)> apply,
                      std::function<std::string()> current = {});
 
+    // Forgets the option `name` (a program that gives a shared option another meaning declares it anew).
+    void remove(const std::string& name);
+
     // Parses options from args[0..]; returns the index of the first non-option argument. Expands @file.
     // Throws Error on an unknown option or a missing or malformed argument.
     size_t parse(std::vector<std::string>& args) const;

@@ -1,0 +1,45 @@
+// Whether an observer sees a sign, from the light: what the sight rays measured (the sign's luminance and its
+// background's as they reach the eye through the smoke, the veil of light the smoke scatters toward the eye
+// included in both), judged by Adrian's visibility level, and beside it Jin's law from the same line's optical
+// depth alone.
+#pragma once
+#include <string>
+
+#include "visibility/adrian.h"
+
+namespace brume {
+
+// What the rays from one eye to one sign measured at one instant.
+struct SightMeasure {
+    double distance = 0;             // eye to the sign's centre (m)
+    double signLuminance = 0;        // cd/m², the mean over the sign's points whose rays met the sign
+    double backgroundLuminance = 0;  // cd/m², the mean over the band around it
+    double seenShare = 0;            // the share of the sign's rays that met the sign (the rest met something before)
+    double solidAngle = 0;           // sr, of the sign from the eye (projected, its far side hidden)
+    double opticalDepth = 0;         // ∫K along the line to the sign's centre
+    bool facing = true;              // the eye is on the sign's front side
+};
+
+struct VisibilityCriteria {
+    AdrianObserver observer;
+    double minimumLevel = 1;     // the visibility level (ΔL / ΔL_threshold) a sign must reach
+    double minimumSeenShare = 0.5;  // of the sign's area left unhidden by walls or furniture
+};
+
+enum class Verdict { Visible, BelowThreshold, Hidden, Behind };
+const char* verdictName(Verdict v);  // "visible", "below-threshold", "hidden", "behind"
+
+struct SightJudgement {
+    double contrast = 0;             // (L_sign − L_background) / L_background
+    double angularSize = 0;          // arc minutes: the side of a square of the sign's solid angle
+    double threshold = 0;            // cd/m², Adrian's ΔL at the background's luminance and that size
+    double visibilityLevel = 0;      // |L_sign − L_background| / threshold
+    Verdict verdict = Verdict::Hidden;
+    double meanExtinction = 0;       // 1/m: the optical depth over the distance
+    double jinDistance = 0;          // m: Jin's S = C / K with K that mean (infinite in clear air)
+    bool jinVisible = false;         // S ≥ the distance (optical depth ≤ C), on the sign's front, not hidden
+};
+
+SightJudgement judge(const SightMeasure& m, double jinConstant, const VisibilityCriteria& criteria);
+
+}  // namespace brume

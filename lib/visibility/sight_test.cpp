@@ -1,0 +1,66 @@
+#include "visibility/sight.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace brume {
+namespace {
+
+SightMeasure measure(double signL, double backgroundL, double distance, double opticalDepth) {
+    SightMeasure m;
+    m.distance = distance;
+    m.signLuminance = signL;
+    m.backgroundLuminance = backgroundL;
+    m.seenShare = 1;
+    m.solidAngle = 0.09 / (distance * distance);  // a 0.3 m square face-on
+    m.opticalDepth = opticalDepth;
+    return m;
+}
+
+// Jin's S = C/K for even smoke, K d the optical depth: exactly, and the verdict S ≥ d.
+TEST(Sight, JinsLawFromTheOpticalDepth) {
+    VisibilityCriteria c;
+    for (double k : {0.1, 0.5, 1.0, 2.0}) {
+        SightJudgement j = judge(measure(100, 10, 10, k * 10), 8, c);
+        EXPECT_NEAR(j.meanExtinction, k, 1e-12);
+        EXPECT_NEAR(j.jinDistance, 8 / k, 1e-12);
+        EXPECT_EQ(j.jinVisible, 8 / k >= 10);
+        EXPECT_EQ(judge(measure(100, 10, 10, k * 10), 3, c).jinVisible, 3 / k >= 10);
+    }
+    EXPECT_TRUE(std::isinf(judge(measure(100, 10, 10, 0), 8, c).jinDistance));
+}
+
+TEST(Sight, VisibilityLevelIsTheDifferenceOverAdriansThreshold) {
+    VisibilityCriteria c;
+    c.minimumLevel = 10;
+    SightJudgement j = judge(measure(150, 20, 5, 0), 8, c);
+    double arcmin = std::sqrt(0.09 / 25) * 180 * 60 / M_PI;
+    EXPECT_NEAR(j.angularSize, arcmin, 1e-9);
+    EXPECT_NEAR(j.contrast, 6.5, 1e-12);
+    EXPECT_NEAR(j.threshold, adrianThreshold(20, arcmin, true, c.observer), 1e-12);
+    EXPECT_NEAR(j.visibilityLevel, 130 / j.threshold, 1e-9);
+    EXPECT_EQ(j.verdict, Verdict::Visible);
+    // A veil of 20 cd/m² added to both lowers the contrast, not the difference; the threshold grows with
+    // the background.
+    SightJudgement veiled = judge(measure(170, 40, 5, 0), 8, c);
+    EXPECT_LT(veiled.contrast, j.contrast);
+    EXPECT_LT(veiled.visibilityLevel, j.visibilityLevel);
+    // A faint sign, a darker sign (negative contrast), one hidden, one seen from behind.
+    EXPECT_EQ(judge(measure(20.5, 20, 5, 0), 8, c).verdict, Verdict::BelowThreshold);
+    SightJudgement darker = judge(measure(2, 20, 5, 0), 3, c);
+    EXPECT_LT(darker.contrast, 0);
+    EXPECT_NEAR(darker.threshold, adrianThreshold(20, arcmin, false, c.observer), 1e-12);
+    SightMeasure hidden = measure(150, 20, 5, 0);
+    hidden.seenShare = 0.4;
+    EXPECT_EQ(judge(hidden, 8, c).verdict, Verdict::Hidden);
+    EXPECT_FALSE(judge(hidden, 8, c).jinVisible);
+    SightMeasure behind = measure(150, 20, 5, 0);
+    behind.facing = false;
+    EXPECT_EQ(judge(behind, 8, c).verdict, Verdict::Behind);
+    EXPECT_FALSE(judge(behind, 8, c).jinVisible);
+    EXPECT_STREQ(verdictName(Verdict::BelowThreshold), "below-threshold");
+}
+
+}  // namespace
+}  // namespace brume

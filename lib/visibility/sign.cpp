@@ -1,0 +1,111 @@
+#include "visibility/sign.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/polygon.h"
+#include "util/error.h"
+
+namespace brume {
+
+namespace {
+
+double triangleArea(const Polygon& p, const std::array<int, 3>& t) {
+    return 0.5 * glm::length(glm::cross(p.vertices[t[1]] - p.vertices[t[0]], p.vertices[t[2]] - p.vertices[t[0]]));
+}
+
+// The i-th of n points of a two-dimensional rank-1 lattice (Fibonacci-like, generator (1, 0.618…·n)), shifted
+// by half a cell: stratified in both directions for any n.
+void latticePoint(int i, int n, double& u, double& v) {
+    const double golden = 0.6180339887498949;
+    u = (i + 0.5) / n;
+    v = std::fmod((i + 0.5) * golden, 1.0);
+}
+
+}  // namespace
+
+double jinConstant(SignKind kind) { return kind == SignKind::Emitting ? 8 : 3; }
+
+Sign signFromScene(const Scene& scene, const std::string& name, SignKind kind, double jinConstant) {
+    Sign sign;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (o.name != name || o.type != "polygon") continue;
+        if (sign.object >= 0)
+            throw Error(scene.objects[size_t(sign.object)].where.str() + ": sign '" + name + "': two polygons have this name (" +
+                        o.where.str() + ")");
+        sign.object = int(i);
+    }
+    if (sign.object < 0) throw Error("sign '" + name + "': no polygon of this name in the scene");
+    const SceneObject& o = scene.objects[size_t(sign.object)];
+    std::vector<dvec3> vertices;
+    for (size_t r = 0; r + 2 < o.reals.size(); r += 3) vertices.push_back({o.reals[r], o.reals[r + 1], o.reals[r + 2]});
+    std::string why;
+    std::optional<Polygon> shape = makePolygon(vertices, why);
+    if (shape) shape->triangles = triangulate(*shape);
+    if (!shape || shape->triangles.empty()) throw Error(o.where.str() + ": sign '" + name + "': " + (shape ? "crosses itself" : why));
+    sign.name = name;
+    sign.kind = kind;
+    sign.jinConstant = jinConstant;
+    sign.shape = *shape;
+    for (const auto& t : shape->triangles)
+        sign.centre += triangleArea(*shape, t) *
+                       (shape->vertices[t[0]] + shape->vertices[t[1]] + shape->vertices[t[2]]) / 3.0;
+    sign.centre /= shape->area;
+    return sign;
+}
+
+dvec3 pointOnPolygon(const Polygon& p, double u, double v) {
+    double share = u * p.area;
+    size_t last = p.triangles.size() - 1, t = 0;
+    for (; t < last; ++t) {
+        double a = triangleArea(p, p.triangles[t]);
+        if (share < a) break;
+        share -= a;
+    }
+    const auto& tri = p.triangles[t];
+    double s = std::sqrt(std::min(1.0, share / triangleArea(p, tri))), w = v;
+    const dvec3 &a = p.vertices[tri[0]], &b = p.vertices[tri[1]], &c = p.vertices[tri[2]];
+    return a + s * ((1 - w) * (b - a) + w * (c - a));
+}
+
+bool insidePolygon(const Polygon& p, const dvec3& q) {
+    for (const auto& t : p.triangles) {
+        const dvec3 &a = p.vertices[t[0]], &b = p.vertices[t[1]], &c = p.vertices[t[2]];
+        dvec3 n = glm::cross(b - a, c - a);
+        if (glm::dot(glm::cross(b - a, q - a), n) >= 0 && glm::dot(glm::cross(c - b, q - b), n) >= 0 &&
+            glm::dot(glm::cross(a - c, q - c), n) >= 0)
+            return true;
+    }
+    return false;
+}
+
+std::vector<dvec3> pointsOnSign(const Sign& sign, int n) {
+    std::vector<dvec3> points;
+    for (int i = 0; i < n; ++i) {
+        double u, v;
+        latticePoint(i, n, u, v);
+        points.push_back(pointOnPolygon(sign.shape, u, v));
+    }
+    return points;
+}
+
+std::vector<dvec3> pointsAroundSign(const Sign& sign, int n, double grow) {
+    Polygon grown = sign.shape;
+    for (dvec3& v : grown.vertices) v = sign.centre + grow * (v - sign.centre);
+    grown.area *= grow * grow;
+    // The points of a lattice over the grown polygon that fall outside the sign: m (1 − 1/grow²) of them.
+    // Taking all of them (not the first n) keeps them spread over the whole band.
+    const int m = int(std::ceil(n / (1 - 1 / (grow * grow))));
+    std::vector<dvec3> points;
+    for (int i = 0; i < m; ++i) {
+        double u, v;
+        latticePoint(i, m, u, v);
+        dvec3 p = pointOnPolygon(grown, u, v);
+        if (!insidePolygon(sign.shape, p)) points.push_back(p);
+    }
+    return points;
+}
+
+}  // namespace brume

@@ -1,0 +1,289 @@
+// vismap: whether the signs of a scene can be seen through its smoke, from observers on a grid or along a route,
+// at given instants: by the light that reaches the eye (Adrian's visibility level) and by Jin's law (see
+// man/vismap.1).
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "integrator/render_options.h"
+#include "io/picture.h"
+#include "render/progress.h"
+#include "render/sequence.h"
+#include "scene/reader.h"
+#include "spectrum/color_output.h"
+#include "spectrum/colorimetry.h"
+#include "util/header.h"
+#include "util/pending_file.h"
+#include "visibility/observers.h"
+#include "visibility/sight.h"
+#include "visibility/sign_list.h"
+
+using namespace brume;
+
+namespace {
+
+struct Options {
+    ProgramOptions program;
+    RenderSettings render;
+    bool irradianceAtHit = false;  // rtrace's -i, which a study has no use for
+    std::string signs, waypoints, prefix;
+    std::vector<double> grid;      // x0 y0 x1 y1 step z
+    std::vector<double> instants;  // none: the scene's -T, else 0
+    int rays = 32;
+    VisibilityCriteria criteria{{}, 10, 0.5};
+    double reportInterval = 0;
+};
+
+const char* const kUsage =
+    "usage: vismap -S signs.txt (-g x0 y0 x1 y1 step z | -wp waypoints.txt) [-T t1,t2,...] [-o prefix] [options] "
+    "octree|scene.rad ... > sight.csv\n";
+
+std::vector<double> listOfReals(const std::string& option, const std::string& list) {
+    std::vector<double> out;
+    std::stringstream in(list);
+    for (std::string word; std::getline(in, word, ',');) out.push_back(toReal(option, word));
+    if (out.empty() || !std::is_sorted(out.begin(), out.end()) || std::adjacent_find(out.begin(), out.end()) != out.end())
+        throw UsageError(option + ": instants must increase (e.g. -T 60,120,180)", kUsage);
+    return out;
+}
+
+OptionTable makeTable(Options& o) {
+    OptionTable t;
+    addProgramOptions(t, o.program);
+    t.add("-S", 1, "the signs: lines 'polygon emitting|reflecting [Jin's C]'", [&o](const auto& a) { o.signs = a[0]; });
+    t.add("-g", 6, "observers on a grid: cells of side step over (x0, y0)-(x1, y1), eyes at height z",
+          [&o](const auto& a) {
+              o.grid.clear();
+              for (const std::string& w : a) o.grid.push_back(toReal("-g", w));
+          });
+    t.add("-wp", 1, "observers at waypoints: lines 'name x y z'", [&o](const auto& a) { o.waypoints = a[0]; });
+    t.add("-o", 1, "prefix of the maps written (with -g)", [&o](const auto& a) { o.prefix = a[0]; });
+    addIntOption(t, "-vr", o.rays, "rays to each sign and to its background per observer and instant");
+    addRealOption(t, "-vl", o.criteria.minimumLevel, "the visibility level a visible sign reaches");
+    addRealOption(t, "-va", o.criteria.observer.age, "the observer's age (years, 23-75)");
+    addRealOption(t, "-vt", o.criteria.observer.seconds, "the observation time (s)");
+    addRealOption(t, "-t", o.reportInterval, "seconds between progress reports (0: none, or a live line on a terminal)");
+    addRenderOptions(t, o.render, o.irradianceAtHit);
+    t.remove("-T");
+    t.add("-T", 1, "instants t1,t2,... (s) of time-varying content",
+          [&o](const auto& a) { o.instants = listOfReals("-T", a[0]); });
+    return t;
+}
+
+// Every ray of one instant: from an observer's eye to a point on a sign or on the band around it.
+struct Aim {
+    size_t pair;  // observer × signs + sign
+    bool onSign;
+    dvec3 target;
+};
+
+struct SignTargets {
+    Sign sign;
+    std::vector<dvec3> on, around;
+};
+
+std::vector<SignTargets> loadSigns(const std::string& path, const Scene& scene, int rays) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": cannot be opened");
+    std::vector<SignTargets> out;
+    for (const SignEntry& e : readSignList(in, path)) {
+        try {
+            Sign s = signFromScene(scene, e.name, e.kind, e.jinConstant);
+            out.push_back({s, pointsOnSign(s, rays), pointsAroundSign(s, rays)});
+        } catch (const Error& error) {
+            throw Error(e.where + ": " + error.what());
+        }
+    }
+    return out;
+}
+
+std::vector<Observer> loadObservers(const Options& o) {
+    if (o.grid.empty() == o.waypoints.empty()) throw UsageError("give observers either on a grid (-g) or at waypoints (-wp)", kUsage);
+    if (!o.grid.empty()) return gridObservers(makeGrid(o.grid[0], o.grid[1], o.grid[2], o.grid[3], o.grid[4]), o.grid[5]);
+    std::ifstream in(o.waypoints);
+    if (!in) throw Error(o.waypoints + ": cannot be opened");
+    return readWaypoints(in, o.waypoints);
+}
+
+bool facing(const Sign& s, const dvec3& eye) { return glm::dot(s.shape.normal, eye - s.centre) > 0; }
+
+// The rays of one instant: for each observer and sign it faces, the sign's points and the band's.
+std::vector<Aim> aims(const std::vector<Observer>& observers, const std::vector<SignTargets>& signs) {
+    std::vector<Aim> out;
+    for (size_t o = 0; o < observers.size(); ++o)
+        for (size_t s = 0; s < signs.size(); ++s) {
+            if (!facing(signs[s].sign, observers[o].eye)) continue;
+            for (const dvec3& p : signs[s].on) out.push_back({o * signs.size() + s, true, p});
+            for (const dvec3& p : signs[s].around) out.push_back({o * signs.size() + s, false, p});
+        }
+    return out;
+}
+
+struct Tally {
+    double signSum = 0, backgroundSum = 0;
+    int signRays = 0, signHits = 0, backgroundRays = 0;
+};
+
+void writeCsvHead() {
+    std::printf("instant_s,observer,x,y,z,sign,kind,distance_m,sign_cd_m2,background_cd_m2,contrast,size_arcmin,"
+                "threshold_cd_m2,visibility_level,verdict,seen_share,optical_depth,mean_extinction_1_m,jin_distance_m,"
+                "jin_verdict\n");
+}
+
+void writeCsvRow(double t, const Observer& o, const Sign& s, const SightMeasure& m, const SightJudgement& j) {
+    std::printf("%g,%s,%g,%g,%g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s\n", t, o.name.c_str(),
+                o.eye.x, o.eye.y, o.eye.z, s.name.c_str(), s.kind == SignKind::Emitting ? "emitting" : "reflecting",
+                m.distance, m.signLuminance, m.backgroundLuminance, j.contrast, j.angularSize, j.threshold,
+                j.visibilityLevel, verdictName(j.verdict), m.seenShare, m.opticalDepth, j.meanExtinction,
+                j.jinDistance, j.jinVisible ? "visible" : "not-visible");
+}
+
+// A map over the grid's cells, one value per observer (the same in R, G and B: a data picture for falsecolor).
+void writeMap(const std::string& path, const ObserverGrid& g, const std::vector<Observer>& observers,
+              const std::vector<double>& values, const std::string& what, const std::string& command) {
+    Picture p;
+    p.width = g.columns, p.height = g.rows;
+    p.pixels.assign(size_t(p.width) * size_t(p.height) * 3, 0.f);
+    for (size_t i = 0; i < observers.size(); ++i)
+        for (int c = 0; c < 3; ++c) p.at(observers[i].column, observers[i].row)[c] = float(std::max(0.0, values[i]));
+    p.header = {command, "VISMAP=" + what,
+                "VISMAP_GRID= x0 " + std::to_string(g.x0) + " y0 " + std::to_string(g.y0) + " step " +
+                    std::to_string(g.step) + " (column 0 at x0, row 0 at the largest y)"};
+    writeWhole(path, [&](std::ostream& out) { writeRadiancePicture(out, p); });
+}
+
+// How long each sign stays visible from each observer, instant by instant: by the light and by Jin's law.
+struct Endurance {
+    std::vector<double> light, jin;  // the last instant through which the sign stayed visible from the first
+    std::vector<bool> lightGoing, jinGoing;
+    explicit Endurance(size_t pairs) : light(pairs, 0), jin(pairs, 0), lightGoing(pairs, true), jinGoing(pairs, true) {}
+    void add(size_t pair, double t, const SightJudgement& j) {
+        lightGoing[pair] = lightGoing[pair] && j.verdict == Verdict::Visible;
+        jinGoing[pair] = jinGoing[pair] && j.jinVisible;
+        if (lightGoing[pair]) light[pair] = t;
+        if (jinGoing[pair]) jin[pair] = t;
+    }
+};
+
+// The luminances the rays of one instant brought, summed per observer and sign.
+std::vector<Tally> tally(const std::vector<Aim>& rays, const std::vector<RayRecord>& records,
+                         const std::vector<SignTargets>& signs, size_t pairs) {
+    std::vector<Tally> out(pairs);
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const Aim& a = rays[i];
+        Tally& t = out[a.pair];
+        const double luminance = kWhiteEfficacy * photopic(records[i].value);
+        const bool metSign = records[i].surfaceObject == signs[a.pair % signs.size()].sign.object;
+        if (a.onSign) {
+            ++t.signRays;
+            if (metSign) ++t.signHits, t.signSum += luminance;
+        } else if (!metSign) {  // the band's rays that graze the sign's edge do not count
+            ++t.backgroundRays, t.backgroundSum += luminance;
+        }
+    }
+    return out;
+}
+
+SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, const Integrator& integrator,
+                     double time) {
+    SightMeasure m;
+    const dvec3 toEye = observer.eye - sign.centre;
+    m.distance = glm::length(toEye);
+    m.facing = facing(sign, observer.eye);
+    m.signLuminance = t.signHits ? t.signSum / t.signHits : 0;
+    m.backgroundLuminance = t.backgroundRays ? t.backgroundSum / t.backgroundRays : 0;
+    m.seenShare = t.signRays ? double(t.signHits) / t.signRays : 0;
+    // A sign small beside its distance: its area times the cosine over the distance squared.
+    m.solidAngle = m.facing ? sign.shape.area * glm::dot(sign.shape.normal, toEye) / std::pow(m.distance, 3) : 0;
+    const double through = photopic(integrator.transmittanceBetween(observer.eye, sign.centre, time));
+    m.opticalDepth = through >= 1 ? 0 : through > 0 ? -std::log(through) : std::numeric_limits<double>::infinity();
+    return m;
+}
+
+// One map per sign: `value(pair)` of each observer.
+void writeMaps(const Options& o, const std::vector<Observer>& observers, const std::vector<SignTargets>& signs,
+               const std::string& suffix, const std::string& what, const std::function<double(size_t)>& value,
+               const std::string& command) {
+    ObserverGrid g = makeGrid(o.grid[0], o.grid[1], o.grid[2], o.grid[3], o.grid[4]);
+    for (size_t s = 0; s < signs.size(); ++s) {
+        std::vector<double> values;
+        for (size_t ob = 0; ob < observers.size(); ++ob) values.push_back(value(ob * signs.size() + s));
+        writeMap(o.prefix + "_" + signs[s].sign.name + suffix, g, observers, values,
+                 what + " of sign " + signs[s].sign.name, command);
+    }
+}
+
+int run(int argc, char** argv) {
+    Options o;
+    OptionTable table = makeTable(o);
+    auto line = parseCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nReproducibleSampling\n");
+    if (!line) return 0;
+    checkRenderSettings(o.render);
+    if (o.irradianceAtHit) throw UsageError("-i: a study traces the light that reaches the eye", kUsage);
+    if (o.signs.empty()) throw UsageError("no signs (-S)", kUsage);
+    if (o.rays < 1) throw UsageError("-vr: at least one ray", kUsage);
+    if (!o.prefix.empty() && o.grid.empty()) throw UsageError("-o: maps need observers on a grid (-g)", kUsage);
+    std::vector<Observer> observers = loadObservers(o);
+    setSpectralSampling(o.render.sampling);
+    Scene scene = loadScene(line->scene);
+    std::vector<SignTargets> signs = loadSigns(o.signs, scene, o.rays);
+    std::vector<double> instants = o.instants.empty() ? std::vector<double>{o.render.time.value_or(0)} : o.instants;
+    RenderScene renderScene(scene, o.render.materials);
+    Sequence sequence(scene, renderScene, o.render);
+    const Integrator& integrator = sequence.integrator();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
+    tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);
+
+    const std::vector<Aim> rays = aims(observers, signs);
+    const size_t pairs = observers.size() * signs.size();
+    ProgressMeter progress("vismap", o.reportInterval);
+    progress.start(long(rays.size() * instants.size()));
+    Endurance endurance(pairs);
+    const std::string command = commandLine(line->command);
+    writeCsvHead();
+    for (double t : instants) {
+        std::vector<RayRecord> records(rays.size());
+        sequence.run(rays.size(), t, [&](size_t i, WorkItem& item) {
+            const Aim& a = rays[i];
+            const dvec3 eye = observers[a.pair / signs.size()].eye;
+            records[i] = integrator.trace({eye, glm::normalize(a.target - eye), i, t}, item);
+            progress.advance(1, 1);
+        });
+        std::vector<Tally> tallies = tally(rays, records, signs, pairs);
+        std::vector<double> levels(pairs);
+        for (size_t pair = 0; pair < pairs; ++pair) {
+            const Observer& observer = observers[pair / signs.size()];
+            const Sign& sign = signs[pair % signs.size()].sign;
+            SightMeasure m = measure(observer, sign, tallies[pair], integrator, t);
+            SightJudgement j = judge(m, sign.jinConstant, o.criteria);
+            writeCsvRow(t, observer, sign, m, j);
+            levels[pair] = j.verdict == Verdict::Hidden || j.verdict == Verdict::Behind ? 0 : j.visibilityLevel;
+            endurance.add(pair, t, j);
+        }
+        std::fflush(stdout);
+        char suffix[64];
+        std::snprintf(suffix, sizeof suffix, "_%g.hdr", t);
+        if (!o.prefix.empty())
+            writeMaps(o, observers, signs, suffix, "visibility level at t = " + std::to_string(t) + " s (0: hidden)",
+                      [&](size_t pair) { return levels[pair]; }, command);
+    }
+    progress.finish();
+    if (!o.prefix.empty()) {
+        const std::string until = "the last instant (s) through which it stayed visible from the first (0: not then)";
+        writeMaps(o, observers, signs, "_until.hdr", "by the light, " + until,
+                  [&](size_t pair) { return endurance.light[pair]; }, command);
+        writeMaps(o, observers, signs, "_jin_until.hdr", "by Jin's law, " + until,
+                  [&](size_t pair) { return endurance.jin[pair]; }, command);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return runReportingErrors([&] { return run(argc, argv); });
+}
