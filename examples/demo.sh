@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Brume demo (make demo): illuminance on the work plane of the example office, computed by rtrace, and a
-# picture of the office rendered by rpict; an exit sign seen through a fire's soot; a room lit by a fire.
+# picture of the office rendered by rpict; an exit sign seen through a fire's soot; a room lit by a fire;
+# visibility maps of two signs in the fire hall of the shared FDS case (fds2vdb, vismap).
 # Usage: bash examples/demo.sh BIN_DIR   (BIN_DIR holds Brume's programs; make demo passes build/bin)
-# The pictures (office.hdr, corridor.hdr, corridor_ab2.hdr, flame.hdr) and the flame's grids go to BIN_DIR/../demo/.
+# The pictures (office.hdr, corridor.hdr, corridor_ab2.hdr, flame.hdr), the flame's grids, vismap's CSVs, maps
+# (hall_*.hdr) and plots (with matplotlib) go to BIN_DIR/../demo/.
 set -euo pipefail
 bin=${1:-build/bin}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -93,10 +95,9 @@ awk -v t="$(( (end - start) / 1000000 ))" -v n="$threads" -v p="$picture" \
   'BEGIN { printf "rpict run time: %.2f s on %d threads\nPicture: %s (Radiance RGBE; view it with ximage, or oiiotool/OpenImageIO; -o name.exr writes OpenEXR)\n", t / 1000, n, p }'
 
 # Smoke: an exit sign at the end of a corridor, seen through the soot of a fire simulation (NIST FDS,
-# ../shared/data) at three instants of the fire, and without smoke. Luminance (cd/m²) of the sign and of
-# the wall beside it from three places along the corridor, each the mean of 200 rays (the smoke's light is
-# sampled); the contrast C = (L_sign − L_wall)/L_wall. Without the shared data, a homogeneous medium of
-# soot's extinction stands in for the smoke.
+# ../shared/data) at the six instants of its grids, from three places along the corridor (vismap: 64 rays to
+# the sign and to the wall around it per place and instant, the smoke's light sampled). Without the shared
+# data, a homogeneous medium of soot's extinction stands in for the smoke.
 corridor=$here/corridor
 timed() {  # timed PICTURE COMMAND...: runs the command, then says how long it took and where the picture is
     local picture=$1 start end
@@ -110,33 +111,34 @@ timed() {  # timed PICTURE COMMAND...: runs the command, then says how long it t
 soot=$here/../../shared/data/vdb/fds_room_fire_mesh2_soot
 if [ -d "$soot" ]; then
     smoke=("$corridor/smoke.rad"); export RAYPATH="$soot:${RAYPATH:-.:/usr/local/lib/ray}"
-    instants=(none 60 120 180); medium=()
+    when=(-T 30,60,90,120,150,180); medium=()
     echo; echo "Smoke: exit sign (150 cd/m²) through FDS soot (K_m 8700 m²/kg, albedo .2), corridor 5 m x 2 m x 2.6 m"
 else
-    smoke=(); instants=(none mist); medium=(-me .4 .4 .4 -ma .2 .2 .2 -mg .6)
+    smoke=(); when=(); medium=(-me .4 .4 .4 -ma .2 .2 .2 -mg .6)
     echo; echo "Smoke: ../shared/data is absent; a homogeneous medium (σ = 0.4/m, albedo .2) stands in for the soot"
 fi
-sopts=(-h -ab 1 -ms .05 -n "$threads")
-echo "  rtrace ${sopts[*]} -T t corridor.rad smoke.rad    (luminance = 179 x photopic radiance)"
-rays() {  # 200 rays from each eye (1.7 m high) to the sign's centre, then to the wall beside it
-    for x in 10.3 12 13.5; do for y in 3 3.45; do
-        for i in $(seq 200); do echo "$x 3 1.7 $(awk -v x="$x" -v y="$y" 'BEGIN { print 15 - x, y - 3, .5 }')"; done
-    done; done
-}
-printf "\n%-14s %-22s %-22s %-22s\n" "" "4.7 m from the sign" "3.0 m" "1.5 m"
-printf "%-14s %-22s %-22s %-22s\n" "instant" "sign  wall  C" "sign  wall  C" "sign  wall  C"
-for t in "${instants[@]}"; do
-    case $t in none) scene_files=("$corridor/corridor.rad"); extra=(); label="no smoke" ;;
-               mist) scene_files=("$corridor/corridor.rad"); extra=("${medium[@]}"); label="medium" ;;
-               *) scene_files=("$corridor/corridor.rad" "${smoke[@]}"); extra=(-T "$t"); label="t = $t s" ;; esac
-    rays | "$rtrace" "${sopts[@]}" "${extra[@]}" "${scene_files[@]}" | awk -v label="$label" '
-        { k = int((NR - 1) / 200); L[k] += 179 * (.265 * $1 + .670 * $2 + .065 * $3) / 200 }
-        END { printf "%-14s", label
-              for (p = 0; p < 3; p++) printf " %6.1f %5.1f %5.1f    ", L[2 * p], L[2 * p + 1], (L[2 * p] - L[2 * p + 1]) / L[2 * p + 1]
-              printf "\n" }'
-done
-echo "(a light-emitting sign stays legible while C is well above the eye's threshold; Jin's law S = 8/K"
-echo " estimates the visibility distance from the extinction K alone, ignoring the lighting)"
+printf 'far 10.3 3 1.7\nmiddle 12 3 1.7\nnear 13.5 3 1.7\n' > "$out/corridor_route.txt"
+vopts=(-ab 1 -ms .05 -vr 64 -n "$threads")
+echo "  vismap -S signs.txt -wp route.txt ${when[*]} ${vopts[*]} corridor.rad smoke.rad > corridor_sight.csv"
+"$bin/vismap" -S "$corridor/signs.txt" -wp "$out/corridor_route.txt" "${when[@]}" "${vopts[@]}" "${medium[@]}" \
+    "$corridor/corridor.rad" "${smoke[@]}" > "$out/corridor_sight.csv"
+# Per instant and place: the sign's and the wall's luminance (cd/m²) and the sign's visibility level; then the
+# first instant each place loses the sign, by the light (Adrian's visibility level >= 10) and by Jin's S = 8/K.
+awk -F, 'NR > 1 { if (!($2 in d)) { place[++n] = $2; d[$2] = $8 }; if (!($1 in seen)) { seen[$1]; t[++m] = $1 }
+                  v[$1, $2] = sprintf("%6.1f %5.1f %5.0f", $9, $10, $14)
+                  if ($15 != "visible" && !($2 in lost)) lost[$2] = $1 " s"
+                  if ($20 != "visible" && !($2 in jlost)) jlost[$2] = $1 " s" }
+         END { printf "%-9s", "instant"; for (i = 1; i <= n; i++) printf "  %-18s", place[i] " (" sprintf("%.1f", d[place[i]]) " m)"
+               printf "\n%-9s", ""; for (i = 1; i <= n; i++) printf "  %-18s", "  sign  wall    VL"; printf "\n"
+               for (j = 1; j <= m; j++) { printf "%-9s", "t = " t[j]; for (i = 1; i <= n; i++) printf "  %-18s", v[t[j], place[i]]; printf "\n" }
+               printf "%-9s", "lost at:"; for (i = 1; i <= n; i++) printf "  %-18s", "light " ((place[i] in lost) ? lost[place[i]] : "never"); printf "\n"
+               printf "%-9s", ""; for (i = 1; i <= n; i++) printf "  %-18s", "Jin   " ((place[i] in jlost) ? jlost[place[i]] : "never"); printf "\n" }' \
+    "$out/corridor_sight.csv"
+echo "(visible: Adrian's visibility level >= 10 (vismap(1)); Jin's law S = 8/K looks at the extinction alone)"
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+    /usr/bin/python3 "$here/hall/plot_sight.py" "$out/corridor_sight.csv" -o "$out/corridor_sight.png"
+    echo "Plot of contrast and visibility level over time: $out/corridor_sight.png"
+fi
 
 # A picture of the corridor at t = 120 s: single scattering of the luminaires' light (-ab 0), 240 x 180.
 picture=$out/corridor.hdr
@@ -189,3 +191,46 @@ fview=(-vp -2.3 -1.8 1.5 -vd 1 0.85 -0.35 -vh 80 -vv 62)
 popts=(-x 240 -y 180 -ab 0 -n "$threads")
 echo "  rpict ${popts[*]} ${fview[*]} -o flame.hdr room.rad"
 RAYPATH="$out:${RAYPATH:-.}" timed "$picture" "$bin/rpict" "${popts[@]}" "${fview[@]}" -o "$picture" "$room"
+
+# Fire-safety visibility, from an FDS run to maps in two commands: the fire hall of the shared FDS case
+# (examples/hall; FDSVisMap's room fire, FDS 6.7.9), its soot read from the FDS output by fds2vdb (mesh 2,
+# the hall's 5 m x 5 m corner by the door: the only mesh whose 3D smoke file the case keeps), and vismap over
+# a grid of eyes at 1.7 m, every 0.5 m, at 60, 120 and 180 s: an exit sign that emits light (over the door)
+# and a sign that reflects it (a plan on the south wall), under the normal lighting and under emergency
+# lighting (1 %). Maps of each go to demo/hall_*.hdr (visibility level per instant, and the instant through
+# which each sign stays visible, by the light and by Jin's law).
+fds=$here/../../shared/data/fds/fdsvismap_room_fire
+hall=$here/hall
+if [ -f "$fds/model.smv" ]; then
+    echo
+    echo "Visibility maps: the fire hall of the shared FDS case (examples/hall), eyes at 1.7 m every 0.5 m"
+    echo "  fds2vdb -t 60,120,180 -o hall_soot model.smv > hall_smoke.rad"
+    bin_dir=$(cd "$bin" && pwd)
+    (cd "$out" && "$bin_dir/fds2vdb" -t 60,120,180 -o hall_soot "$fds/model.smv" > hall_smoke.rad 2> /dev/null)
+    hopts=(-g 10 0 15 5 0.5 1.7 -T 60,120,180 -ab 1 -ad 256 -n "$threads")
+    for lighting in lights emergency; do
+        echo "  vismap -S signs.txt ${hopts[*]} -o hall_$lighting hall.rad $lighting.rad hall_smoke.rad > hall_$lighting.csv"
+        start=$(date +%s%N)
+        (cd "$out" && "$bin_dir/vismap" -S "$hall/signs.txt" "${hopts[@]}" -o "hall_$lighting" "$hall/hall.rad" \
+            "$hall/$lighting.rad" hall_smoke.rad > "hall_$lighting.csv")
+        end=$(date +%s%N)
+        awk -F, -v lighting="$lighting" -v t="$(( (end - start) / 1000000 ))" '
+            NR > 1 { k = $6 " " $1; if (!(k in n)) order[++m] = k; n[k]++
+                     light[k] += $15 == "visible"; jin[k] += $20 == "visible"
+                     if (($15 == "visible") != ($20 == "visible")) differ[k]++ }
+            END { printf "  %-9s %-10s %-8s %-16s %-16s %s\n", "lighting", "sign", "instant", "visible by light",
+                         "by Jin'"'"'s law", "cells where they differ"
+                  for (i = 1; i <= m; i++) { k = order[i]; split(k, w, " ")
+                      printf "  %-9s %-10s %-8s %-16s %-16s %d\n", lighting, w[1], w[2] " s", light[k] "/" n[k],
+                             jin[k] "/" n[k], differ[k] }
+                  printf "  vismap run time: %.2f s\n", t / 1000 }' "$out/hall_$lighting.csv"
+    done
+    echo "(a sign that reflects the light is lost in the dim emergency lighting long before Jin's law says so:"
+    echo " the law sees the smoke, not the light; maps: demo/hall_*_until.hdr, demo/hall_*_jin_until.hdr)"
+    if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+        /usr/bin/python3 "$hall/plot_sight.py" "$out/hall_lights.csv" "$out/hall_emergency.csv" -o "$out/hall_maps.png"
+        echo "Plots: $out/hall_maps.png"
+    fi
+else
+    echo; echo "Visibility maps: ../shared/data/fds is absent (see README: from an FDS run to visibility maps)"
+fi

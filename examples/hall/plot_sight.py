@@ -1,0 +1,108 @@
+#!/usr/bin/python3
+"""Pictures of vismap's CSVs (vismap(1)), with matplotlib.
+
+    plot_sight.py sight.csv [more.csv ...] -o plots.png
+
+Grid observers (cell_C_R): maps, one row per file and sign, one column per instant, each cell coloured by the
+sign's visibility level (log scale; white where the sign is hidden or seen from behind), outlined in black where
+it is visible by the light, crossed where Jin's law says otherwise. Waypoints: the contrast and the
+visibility level over time, one line per waypoint and sign.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.colors as colors  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def rows_of(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def grid_panels(files):
+    """(label, sign, instant) -> {(x, y): row}."""
+    panels = {}
+    for path, rows in files:
+        label = os.path.splitext(os.path.basename(path))[0]
+        for r in rows:
+            key = (label, r["sign"], float(r["instant_s"]))
+            panels.setdefault(key, {})[(float(r["x"]), float(r["y"]))] = r
+    return panels
+
+
+def plot_maps(files, out):
+    panels = grid_panels(files)
+    rows = sorted({(k[0], k[1]) for k in panels}, key=lambda k: (k[0], k[1]))
+    instants = sorted({k[2] for k in panels})
+    fig, axes = plt.subplots(len(rows), len(instants), figsize=(3.2 * len(instants), 3.0 * len(rows)),
+                             squeeze=False, constrained_layout=True)
+    norm = colors.LogNorm(vmin=0.1, vmax=1e4)
+    image = None
+    for i, (label, sign) in enumerate(rows):
+        for j, t in enumerate(instants):
+            ax = axes[i][j]
+            cells = panels.get((label, sign, t), {})
+            xs = sorted({p[0] for p in cells})
+            ys = sorted({p[1] for p in cells})
+            step = xs[1] - xs[0] if len(xs) > 1 else 1.0
+            grid = [[math.nan] * len(xs) for _ in ys]
+            for (x, y), r in cells.items():
+                seen = r["verdict"] in ("visible", "below-threshold")
+                grid[ys.index(y)][xs.index(x)] = max(float(r["visibility_level"]), 0.1) if seen else math.nan
+            extent = (xs[0] - step / 2, xs[-1] + step / 2, ys[0] - step / 2, ys[-1] + step / 2)
+            image = ax.imshow(grid, origin="lower", extent=extent, norm=norm, cmap="viridis")
+            for (x, y), r in cells.items():
+                light = r["verdict"] == "visible"
+                if light:
+                    ax.add_patch(plt.Rectangle((x - step / 2, y - step / 2), step, step, fill=False, lw=0.6))
+                if light != (r["jin_verdict"] == "visible"):
+                    ax.plot(x, y, "x", color="red", ms=4, mew=1)
+            ax.set_title(f"{label}: {sign}, t = {t:g} s", fontsize=9)
+            ax.set_xlabel("x (m)", fontsize=8)
+            ax.set_ylabel("y (m)", fontsize=8)
+            ax.tick_params(labelsize=7)
+    fig.colorbar(image, ax=axes, shrink=0.6, label="visibility level (Adrian); outlined: visible (>= -vl); "
+                                                   "x: Jin's law differs")
+    fig.savefig(out, dpi=110)
+
+
+def plot_waypoints(files, out):
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True, constrained_layout=True)
+    for path, rows in files:
+        series = {}
+        for r in rows:
+            series.setdefault((r["observer"], r["sign"]), []).append(r)
+        for (observer, sign), rs in series.items():
+            t = [float(r["instant_s"]) for r in rs]
+            label = f"{observer} ({float(rs[0]['distance_m']):.1f} m), {sign}"
+            top.plot(t, [float(r["contrast"]) for r in rs], "o-", label=label)
+            bottom.plot(t, [max(float(r["visibility_level"]), 0.1) for r in rs], "o-", label=label)
+    top.set_ylabel("contrast (L_sign / L_background - 1)")
+    bottom.set_ylabel("visibility level (Adrian)")
+    bottom.set_yscale("log")
+    bottom.set_xlabel("t (s)")
+    top.legend(fontsize=7)
+    fig.savefig(out, dpi=110)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("csv", nargs="+")
+    parser.add_argument("-o", "--output", required=True)
+    args = parser.parse_args()
+    files = [(path, rows_of(path)) for path in args.csv]
+    if not any(rows for _, rows in files):
+        sys.exit("plot_sight.py: no rows in " + ", ".join(args.csv))
+    grid = all(r["observer"].startswith("cell_") for _, rows in files for r in rows)
+    (plot_maps if grid else plot_waypoints)(files, args.output)
+
+
+if __name__ == "__main__":
+    main()
