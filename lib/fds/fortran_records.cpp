@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <cstring>
 #include <filesystem>
 
@@ -49,15 +50,24 @@ void FortranRecords::expect(std::vector<char>& bytes, std::size_t size, const ch
                     " bytes, not " + std::to_string(size));
 }
 
-FortranRecords::Next nextFrameTime(FortranRecords& records, std::size_t frame, double previous, double& time) {
-    std::uint64_t at = records.offset();
+bool forEachFrame(FortranRecords& records, const std::function<bool(std::size_t, std::uint64_t)>& readData,
+                  const std::function<bool(double)>& wanted,
+                  const std::function<void(std::size_t, double, std::uint64_t)>& use) {
+    double previous = -std::numeric_limits<double>::infinity();  // kept or not: times increase over all frames
     std::vector<char> r;
-    FortranRecords::Next n = records.next(r);
-    if (n != FortranRecords::Next::Record) return n;
-    if (r.size() != 4) frameError(records, frame, at, "expected its time");
-    time = float32At(r, 0);
-    if (!std::isfinite(time) || !(time > previous)) frameError(records, frame, at, "times must increase");
-    return n;
+    for (std::size_t frame = 0;; ++frame) {
+        std::uint64_t at = records.offset();
+        FortranRecords::Next n = records.next(r);
+        if (n == FortranRecords::Next::End) return false;
+        if (n == FortranRecords::Next::Truncated) return true;
+        if (r.size() != 4) frameError(records, frame, at, "expected its time");
+        double time = float32At(r, 0);
+        if (!std::isfinite(time) || !(time > previous)) frameError(records, frame, at, "times must increase");
+        at = records.offset();
+        if (!readData(frame, at)) return true;
+        previous = time;
+        if (!wanted || wanted(time)) use(frame, time, at);
+    }
 }
 
 void frameError(const FortranRecords& records, std::size_t frame, std::uint64_t byte, const std::string& what) {

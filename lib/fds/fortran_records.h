@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,10 +34,14 @@ private:
     std::uint64_t size_ = 0;
 };
 
-// FDS writes an output frame as a record of its time and records of its data. The time of frame `frame` (from
-// 0), after `previous` (−∞ for the first): Record with `time` set, or End, or Truncated, as next() says.
-// Throws frameError where the record is not a time after `previous`.
-FortranRecords::Next nextFrameTime(FortranRecords& records, std::size_t frame, double previous, double& time);
+// FDS writes an output frame as a record of its time and records of its data. For each frame: its time (which
+// must increase: frameError otherwise), then `readData(frame, at)` reads its data records (frame from 0, `at` the
+// byte offset of its first, for messages), returning false where the file ends inside them; `use(frame, time,
+// at)` then takes each whole frame `wanted` keeps (all where it is null). Returns whether the file ended inside a
+// frame (a run still writing, or killed): that frame is dropped.
+bool forEachFrame(FortranRecords& records, const std::function<bool(std::size_t, std::uint64_t)>& readData,
+                  const std::function<bool(double)>& wanted,
+                  const std::function<void(std::size_t, double, std::uint64_t)>& use);
 // Error "path: frame N (byte B): what", N counted from 1.
 [[noreturn]] void frameError(const FortranRecords& records, std::size_t frame, std::uint64_t byte,
                              const std::string& what);

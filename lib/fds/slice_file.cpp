@@ -1,7 +1,6 @@
 #include "fds/slice_file.h"
 
 #include <cmath>
-#include <limits>
 
 #include "fds/fortran_records.h"
 #include "util/error.h"
@@ -38,28 +37,22 @@ SliceFile readSlice(const std::string& path, const std::function<bool(double)>& 
         values *= size_t(hi - lo + 1);
     }
     if (values > (size_t(1) << 31)) throw Error(path + ": bad index range in its header");
-    double previous = -std::numeric_limits<double>::infinity();  // kept or not: times increase over all frames
-    for (size_t k = 0;; ++k) {
-        SliceFrame frame;
-        FortranRecords::Next n = nextFrameTime(records, k, previous, frame.time);
-        if (n == FortranRecords::Next::End) break;
-        std::uint64_t at = records.offset();
-        if (n == FortranRecords::Next::Record) n = records.next(r);
-        if (n != FortranRecords::Next::Record) {
-            file.truncated = true;
-            break;
-        }
-        if (r.size() != 4 * values)
-            frameError(records, k, at, "holds " + std::to_string(r.size() / 4) + " values, not " + std::to_string(values));
-        previous = frame.time;
-        if (wanted && !wanted(frame.time)) continue;
-        frame.values.resize(values);
-        for (size_t i = 0; i < values; ++i) {
-            frame.values[i] = float32At(r, i);
-            if (!std::isfinite(frame.values[i])) frameError(records, k, at, "a value is not a number (an unstable run?)");
-        }
-        file.frames.push_back(std::move(frame));
-    }
+    file.truncated = forEachFrame(
+        records,
+        [&](size_t k, std::uint64_t at) {
+            if (records.next(r) != FortranRecords::Next::Record) return false;
+            if (r.size() != 4 * values)
+                frameError(records, k, at, "holds " + std::to_string(r.size() / 4) + " values, not " + std::to_string(values));
+            return true;
+        },
+        wanted,
+        [&](size_t k, double time, std::uint64_t at) {
+            SliceFrame& frame = file.frames.emplace_back(SliceFrame{time, std::vector<float>(values)});
+            for (size_t i = 0; i < values; ++i) {
+                frame.values[i] = float32At(r, i);
+                if (!std::isfinite(frame.values[i])) frameError(records, k, at, "a value is not a number (an unstable run?)");
+            }
+        });
     return file;
 }
 

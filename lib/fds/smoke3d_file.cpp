@@ -1,7 +1,6 @@
 #include "fds/smoke3d_file.h"
 
 #include <cmath>
-#include <limits>
 
 #include "fds/fortran_records.h"
 #include "util/error.h"
@@ -48,31 +47,21 @@ Smoke3dFile readSmoke3d(const std::string& path, const glm::ivec3& cells, const 
                         " cells");
     const size_t nodes = size_t(cells.x + 1) * size_t(cells.y + 1) * size_t(cells.z + 1);
     Smoke3dFile file;
-    double previous = -std::numeric_limits<double>::infinity();  // kept or not: times increase over all frames
-    for (size_t k = 0;; ++k) {
-        Smoke3dFrame frame;
-        FortranRecords::Next n = nextFrameTime(records, k, previous, frame.time);
-        if (n == FortranRecords::Next::End) break;
-        std::uint64_t at = records.offset();
-        std::vector<char> data;
-        if (n == FortranRecords::Next::Record) n = records.next(r);
-        if (n == FortranRecords::Next::Record) {
-            if (r.size() != 8 || size_t(int32At(r, 0)) != nodes)
-                frameError(records, k, at, "expected its sizes, one byte per node");
-            n = records.next(data);
-            if (n == FortranRecords::Next::Record && data.size() != size_t(int32At(r, 1)))
-                frameError(records, k, at, "compressed data of the wrong size");
-        }
-        if (n != FortranRecords::Next::Record) {
-            file.truncated = true;
-            break;
-        }
-        previous = frame.time;
-        if (wanted && !wanted(frame.time)) continue;
-        frame.bytes.resize(nodes);
-        if (!decode(data, frame.bytes)) frameError(records, k, at, "its run-length code does not give one byte per node");
-        file.frames.push_back(std::move(frame));
-    }
+    std::vector<char> data;
+    file.truncated = forEachFrame(
+        records,
+        [&](size_t k, std::uint64_t at) {
+            if (records.next(r) != FortranRecords::Next::Record) return false;
+            if (r.size() != 8 || size_t(int32At(r, 0)) != nodes) frameError(records, k, at, "expected its sizes, one byte per node");
+            if (records.next(data) != FortranRecords::Next::Record) return false;
+            if (data.size() != size_t(int32At(r, 1))) frameError(records, k, at, "compressed data of the wrong size");
+            return true;
+        },
+        wanted,
+        [&](size_t k, double time, std::uint64_t at) {
+            Smoke3dFrame& frame = file.frames.emplace_back(Smoke3dFrame{time, std::vector<std::uint8_t>(nodes)});
+            if (!decode(data, frame.bytes)) frameError(records, k, at, "its run-length code does not give one byte per node");
+        });
     return file;
 }
 
