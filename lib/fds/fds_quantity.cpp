@@ -91,16 +91,21 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     }
     source_ = slices ? "cell-centred 3D slices" : "3D smoke files (8-bit opacities)";
     std::vector<bool> covered(smv.meshes.size());
+    std::vector<const FdsFile*> chosen;  // one file per mesh
     for (const FdsFile& f : smv.files) {
         if (!(slices ? volumeSlice(f) : smoke3d(f)) || covered[size_t(f.mesh)]) continue;
         if (!fileExists(f.path)) {
             warnings_.push_back(f.path + ": listed in " + smv.path + " but absent");
             continue;
         }
-        if (slices) addSlice(smv, f, instants);
-        else addSmoke3d(smv, f, instants);
+        chosen.push_back(&f);
         covered[size_t(f.mesh)] = true;
-        if (units_.empty()) units_ = f.units;
+    }
+    setLattice(smv, chosen, slices);
+    for (const FdsFile* f : chosen) {
+        if (slices) addSlice(smv, *f, instants);
+        else addSmoke3d(smv, *f, instants);
+        if (units_.empty()) units_ = f->units;
     }
     for (size_t m = 0; m < covered.size(); ++m)
         if (!covered[m])
@@ -111,19 +116,32 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     if (times_.empty()) throw Error(smv.path + ": the files of '" + quantity + "' hold no frames");
 }
 
-glm::ivec3 FdsQuantity::place(const SmvIndex& smv, int mesh, const glm::dvec3& p) {
-    glm::dvec3 spacing = uniformSpacing(smv, mesh);
-    if (meshes_.empty()) origin_ = p, spacing_ = spacing;
+void FdsQuantity::setLattice(const SmvIndex& smv, const std::vector<const FdsFile*>& files, bool cells) {
+    spacing_ = glm::dvec3(std::numeric_limits<double>::infinity());
+    for (const FdsFile* f : files) spacing_ = glm::min(spacing_, uniformSpacing(smv, f->mesh));
+    const FdsMesh& first = smv.meshes[size_t(files.front()->mesh)];
+    origin_ = glm::dvec3(first.nodes[0][0], first.nodes[1][0], first.nodes[2][0]) + (cells ? 0.5 : 0.0) * spacing_;
+}
+
+glm::ivec3 FdsQuantity::refinement(const SmvIndex& smv, int mesh, bool cells) const {
+    glm::dvec3 ratio = uniformSpacing(smv, mesh) / spacing_;
+    glm::ivec3 r(glm::round(ratio));
     for (int a = 0; a < 3; ++a)
-        if (std::abs(spacing[a] - spacing_[a]) > 1e-4 * spacing_[a])
-            throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " has cells of " + std::to_string(spacing[a]) +
-                        " m where the first has " + std::to_string(spacing_[a]) +
-                        " m: meshes of different resolutions are not imported yet");
+        if (std::abs(ratio[a] - r[a]) > 1e-3 * ratio[a] || (!cells && r[a] != 1))
+            throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " has cells of " +
+                        std::to_string(ratio[a] * spacing_[a]) + " m beside cells of " + std::to_string(spacing_[a]) +
+                        " m: " +
+                        (cells ? "meshes are imported when their cells are whole multiples of the finest"
+                               : "meshes of different resolutions are imported from cell-centred slices only"));
+    return r;
+}
+
+glm::ivec3 FdsQuantity::place(const SmvIndex& smv, int mesh, const glm::dvec3& p) const {
     glm::dvec3 index = (p - origin_) / spacing_;
     glm::dvec3 rounded = glm::round(index);
     for (int a = 0; a < 3; ++a)
         if (std::abs(index[a] - rounded[a]) > 1e-3 || std::abs(rounded[a]) > 1e8)
-            throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " is not on the lattice of the first mesh's cells");
+            throw Error(smv.path + ": mesh " + std::to_string(mesh + 1) + " is not on the lattice of the finest mesh's cells");
     return glm::ivec3(rounded);
 }
 
@@ -138,9 +156,10 @@ void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vec
                                                              f.range[5] - f.range[4] + 1);
     MeshFrames frames;
     frames.size = all - 1;
-    glm::dvec3 centre;
-    for (int a = 0; a < 3; ++a) centre[a] = 0.5 * (m.nodes[a][size_t(lo[a])] + m.nodes[a][size_t(lo[a] + 1)]);
-    frames.first = place(smv, f.mesh, centre);
+    frames.refine = refinement(smv, f.mesh, true);
+    // The centre of the first lattice voxel inside the first cell: a coarser mesh's cells fill several.
+    glm::dvec3 corner(m.nodes[0][size_t(lo[0])], m.nodes[1][size_t(lo[1])], m.nodes[2][size_t(lo[2])]);
+    frames.first = place(smv, f.mesh, corner + 0.5 * spacing_);
     for (SliceFrame& frame : s.frames) {
         frames.times.push_back(frame.time);
         std::vector<float> cells;
@@ -166,6 +185,7 @@ void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::v
     const double dx = m.nodes[0][1] - m.nodes[0][0];  // FDS encodes every node with its mesh's first cell width
     MeshFrames frames;
     frames.size = m.cells + 1;
+    frames.refine = refinement(smv, f.mesh, false);
     frames.first = place(smv, f.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
     float density[256];
     for (int b = 0; b < 256; ++b) density[b] = float(sootDensity(b, km, dx));
@@ -180,7 +200,7 @@ void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::v
 
 LatticeVoxels FdsQuantity::at(double time) const {
     glm::ivec3 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
-    for (const MeshFrames& m : meshes_) lo = glm::min(lo, m.first), hi = glm::max(hi, m.first + m.size);
+    for (const MeshFrames& m : meshes_) lo = glm::min(lo, m.first), hi = glm::max(hi, m.first + m.size * m.refine);
     glm::ivec3 size = hi - lo;
     // Sums and counts: meshes share the nodes on their common faces (3D smoke files), where both give a value.
     std::vector<float> sum(size_t(size.x) * size_t(size.y) * size_t(size.z));
@@ -199,10 +219,16 @@ LatticeVoxels FdsQuantity::at(double time) const {
         for (int k = 0; k < m.size.z; ++k)
             for (int j = 0; j < m.size.y; ++j)
                 for (int i = 0; i < m.size.x; ++i, ++n) {
-                    glm::ivec3 v = m.first + glm::ivec3(i, j, k) - lo;
-                    size_t at = size_t(v.x) + size_t(size.x) * (size_t(v.y) + size_t(size.y) * size_t(v.z));
-                    sum[at] += (1 - w) * a[n] + w * b[n];
-                    ++count[at];
+                    const float value = (1 - w) * a[n] + w * b[n];
+                    const glm::ivec3 cell = m.first + glm::ivec3(i, j, k) * m.refine - lo;
+                    for (int dz = 0; dz < m.refine.z; ++dz)  // a coarser mesh's cell fills several voxels
+                        for (int dy = 0; dy < m.refine.y; ++dy)
+                            for (int dx = 0; dx < m.refine.x; ++dx) {
+                                glm::ivec3 v = cell + glm::ivec3(dx, dy, dz);
+                                size_t at = size_t(v.x) + size_t(size.x) * (size_t(v.y) + size_t(size.y) * size_t(v.z));
+                                sum[at] += value;
+                                ++count[at];
+                            }
                 }
     }
     LatticeVoxels out;

@@ -24,9 +24,10 @@ class FdsQuantity {
 public:
     // The meshes' files of `quantity` (a long label as the .smv has it, e.g. "SOOT DENSITY") in the index `smv`:
     // the frames around each of `instants` (seconds), or all frames if none are given. Temperatures in °C become
-    // kelvin. Throws Error "smv: …" where no file has the quantity (naming those that the case has), meshes are
-    // not on one lattice (different or stretched cells), or "file: …" where a file cannot be read or has no
-    // frames around an instant.
+    // kelvin. Meshes of coarser cells (whole multiples of the finest, cell-centred slices only) fill several
+    // voxels per cell. Throws Error "smv: …" where no file has the quantity (naming those that the case has),
+    // meshes are not on one lattice (stretched cells, cells that are not multiples, meshes off the lattice), or
+    // "file: …" where a file cannot be read or has no frames around an instant.
     FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants = {});
 
     // The instants of the first mesh's frames that were read (seconds): with instants given, only those around them.
@@ -43,14 +44,20 @@ public:
 private:
     struct MeshFrames {
         glm::ivec3 first{0}, size{0};           // the lattice index of its first value, and its values per axis
+        glm::ivec3 refine{1};                   // the lattice voxels per value along each axis (a coarser mesh's)
         std::vector<double> times;
         std::vector<std::vector<float>> values;  // per frame, over size, x fastest
     };
     using Wanted = std::function<bool(double)>;
     void addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
     void addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
-    // The lattice index of world point p, which must be a voxel centre (of the lattice set by the first mesh).
-    glm::ivec3 place(const SmvIndex& smv, int mesh, const glm::dvec3& p);
+    // The lattice: the finest cells of the meshes read, aligned with the first one's (its cell centres, or its
+    // nodes for 3D smoke files, `cells` false).
+    void setLattice(const SmvIndex& smv, const std::vector<const FdsFile*>& files, bool cells);
+    // How many lattice voxels a mesh's value fills along each axis; Error unless whole numbers (1 for nodes).
+    glm::ivec3 refinement(const SmvIndex& smv, int mesh, bool cells) const;
+    // The lattice index of world point p, which must be a voxel centre.
+    glm::ivec3 place(const SmvIndex& smv, int mesh, const glm::dvec3& p) const;
 
     std::vector<MeshFrames> meshes_;
     std::vector<double> times_;

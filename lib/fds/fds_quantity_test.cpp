@@ -73,6 +73,43 @@ TEST(FdsQuantity, TemperaturesInKelvinAndExtinctionIsSootTimesFdsMassExtinction)
     for (const auto& [i, k] : extinction) EXPECT_NEAR(k, 8700 * soot[i], 1e-5 * k);
 }
 
+// A mesh of 0.2 m cells beside one of 0.1 m: the lattice is the finer one's, and each coarse cell fills 2 x 2 x 2
+// of its voxels with FDS's value for it; the 3D smoke files (node values) of such meshes are refused.
+TEST(FdsQuantity, CoarserMeshesFillSeveralVoxelsPerCell) {
+    const std::string dir = std::string(BRUME_TEST_DATA) + "/fds/two_res";
+    SmvIndex smv = readSmv(dir + "/two_res.smv");
+    FdsQuantity soot(smv, "SOOT DENSITY");
+    LatticeVoxels v = soot.at(soot.times().back());
+    EXPECT_EQ(v.origin, glm::dvec3(0.05));
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(v.spacing[a], 0.1, 1e-6);
+    Voxels cells = byIndex(v);
+    SliceFile coarse = readSlice(dir + "/two_res_2_1.sf"), fine = readSlice(dir + "/two_res_1_1.sf");
+    int compared = 0;
+    for (int k = 0; k < 5; ++k)
+        for (int j = 0; j < 5; ++j)
+            for (int i = 0; i < 5; ++i) {
+                float fds = coarse.frames.back().values[size_t((i + 1) + 6 * ((j + 1) + 6 * (k + 1)))];
+                if (fds == 0) continue;
+                for (int d = 0; d < 8; ++d) {
+                    std::tuple<int, int, int> at{10 + 2 * i + (d & 1), 2 * j + (d >> 1 & 1), 2 * k + (d >> 2)};
+                    ASSERT_EQ(cells[at], fds) << i << " " << j << " " << k;
+                }
+                ++compared;
+            }
+    EXPECT_GT(compared, 50);
+    EXPECT_EQ((cells[{3, 4, 9}]), fine.frames.back().values[size_t(4 + 11 * (5 + 11 * 10))]);
+    for (const auto& [i, value] : v.values) EXPECT_TRUE(i.x >= 0 && i.x < 20 && i.y >= 0 && i.y < 10 && i.z >= 0 && i.z < 10);
+    std::erase_if(smv.files, [](const FdsFile& f) { return f.kind == FdsFile::Kind::Slice; });
+    try {
+        FdsQuantity nodes(smv, "SOOT DENSITY");
+        ADD_FAILURE() << "3D smoke files of meshes of two resolutions were taken";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("meshes of different resolutions are imported from cell-centred slices only"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 // With the slices set aside, soot comes from the 3D smoke files: node values from 8-bit opacities. Each node's
 // byte encodes FDS's mean of the 8 cells around it, so the mean of those cells in the slices falls inside the
 // byte's interval (±0.5 of a byte); nodes on the meshes' shared face are the mean of both meshes' bytes.
