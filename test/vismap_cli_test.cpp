@@ -2,6 +2,7 @@
 // integral, Jin's column against S = C/K, its maps, and its errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -164,6 +165,18 @@ TEST_F(Vismap, ScatteringSmokeLitFromTheSideVeilsTheSign) {
     double contrast = (signL - wallL) / wallL;
     EXPECT_LT(contrast, 6);  // 9 without the veil
     EXPECT_NEAR(number(rows[0], "contrast"), contrast, 0.03 * contrast);
+}
+
+// -u- gives the same answer on any number of threads (the caches' records made in an order of their own).
+TEST_F(Vismap, SameAnswerOnAnyNumberOfThreads) {
+    waypoints("a 3 1 1.75\nb 6 -1 1.75\n");
+    std::ofstream(dir_ / "lamp.rad") << "void light lamp_light 0 0 3 1e4 1e4 1e4\nlamp_light sphere lamp 0 0 4  2.5 1.5 1.75 0.05\n"
+                                        "void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey polygon floor 0 0 12  -1 -5 0  9 -5 0  9 5 0  -1 5 0\n";
+    const std::string line = "vismap -S signs.txt -wp route.txt -u- -ab 1 -ad 64 -me .2 .2 .2 -ma .5 .5 .5 ";
+    Output one = run(line + "-n 1 sign.rad lamp.rad"), two = run(line + "-n 2 sign.rad lamp.rad");
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(one.out, two.out);
+    EXPECT_EQ(std::count(one.out.begin(), one.out.end(), '\n'), 3);
 }
 
 // Maps over a grid: one picture per instant and sign, its pixels the visibility level (0 where a wall hides the
