@@ -167,6 +167,24 @@ TEST_F(Vismap, ScatteringSmokeLitFromTheSideVeilsTheSign) {
     EXPECT_NEAR(number(rows[0], "contrast"), contrast, 0.03 * contrast);
 }
 
+// A model at its site's coordinates (UTM) gives the numbers it gives at the origin.
+TEST_F(Vismap, SiteCoordinatesChangeNothing) {
+    waypoints("a 2 0 1.75\nb 5 0.5 1.75\n");
+    std::ofstream(dir_ / "far_route.txt") << "a 500002 5000000 1.75\nb 500005 5000000.5 1.75\n";
+    const std::string options = "-S signs.txt -ab 0 -me .3 .3 .3 -ma 0 0 0 ";
+    std::vector<Row> here = csv(run("vismap " + options + "-wp route.txt sign.rad").out);
+    std::vector<Row> there =
+        csv(run("vismap " + options + "-wp far_route.txt '!xform -t 500000 5000000 0 sign.rad'").out);
+    ASSERT_EQ(here.size(), 2u);
+    ASSERT_EQ(there.size(), 2u);
+    for (size_t i = 0; i < 2; ++i)
+        for (const char* column : {"distance_m", "sign_cd_m2", "background_cd_m2", "contrast", "visibility_level",
+                                   "optical_depth", "jin_distance_m"})
+            EXPECT_NEAR(number(there[i], column), number(here[i], column), 1e-4 * std::abs(number(here[i], column)))
+                << column << " " << here[i].at("observer");
+    EXPECT_EQ(there[1].at("x"), "500005");
+}
+
 // -u- gives the same answer on any number of threads (the caches' records made in an order of their own).
 TEST_F(Vismap, SameAnswerOnAnyNumberOfThreads) {
     waypoints("a 3 1 1.75\nb 6 -1 1.75\n");

@@ -135,7 +135,7 @@ void writeCsvHead() {
 }
 
 void writeCsvRow(double t, const Observer& o, const Sign& s, const SightMeasure& m, const SightJudgement& j) {
-    std::printf("%g,%s,%g,%g,%g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s\n", t, o.name.c_str(),
+    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s\n", t, o.name.c_str(),
                 o.eye.x, o.eye.y, o.eye.z, s.name.c_str(), s.kind == SignKind::Emitting ? "emitting" : "reflecting",
                 m.distance, m.signLuminance, m.backgroundLuminance, j.contrast, j.angularSize, j.threshold,
                 j.visibilityLevel, verdictName(j.verdict), m.seenShare, m.opticalDepth, j.meanExtinction,
