@@ -7,7 +7,8 @@
 # spectral.py (cost of -cs 12 … 81 against RGB) takes --repeat and is left out with --skip-spectral; smoke.py
 # (time against error through FDS soot, with and without empty-space skipping) takes --repeat and is left out
 # with --skip-smoke; volume_cache.py (time against error of view rays through lit smoke, volume cache against path
-# tracing, 48 rays and 40 x 30 pictures; about 80 minutes) is left out with --skip-smoke too; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
+# tracing, 48 rays and 40 x 30 pictures; about 80 minutes) and vismap.py (a floor's visibility study, path tracing
+# against the caches; about 15 minutes) are left out with --skip-smoke too; daylight.py (daylit rooms' sensor grids against Radiance) and daylight_picture.py (a daylit
 # picture at -ab 5 against Radiance's cache) take --remake-reference and --rerun-radiance, and are left out with
 # --skip-daylight.
 set -euo pipefail
@@ -62,6 +63,8 @@ if ((!skip_smoke)); then
     python3 "$here/smoke.py" --bin "$bin" "${smoke_args[@]}"
     echo
     python3 "$here/volume_cache.py" --bin "$bin"
+    echo
+    python3 "$here/vismap.py" --bin "$bin"
 fi
 if ((!skip_daylight)); then
     echo
