@@ -197,6 +197,27 @@ TEST_F(Vismap, SameAnswerOnAnyNumberOfThreads) {
     EXPECT_EQ(std::count(one.out.begin(), one.out.end(), '\n'), 3);
 }
 
+// The visibility level's standard error comes from the rays' spread; a sight line whose level lies within two of
+// them of the criterion takes another pass of rays (-vp), which brings it down by about √2.
+TEST_F(Vismap, SightLinesNearTheCriterionTakeMoreRays) {
+    waypoints("b 5 0 1.75\n");
+    std::ofstream(dir_ / "lamp.rad") << "void light lamp_light 0 0 3 1e6 1e6 1e6\nlamp_light sphere lamp 0 0 4  2.5 1.5 1.75 0.01\n";
+    const std::string line = "vismap -S signs.txt -wp route.txt -u- -ab 0 -vr 64 -me .3 .3 .3 -ma .5 .5 .5 ";
+    std::vector<Row> first = csv(run(line + "-vp 1 sign.rad lamp.rad").out);
+    ASSERT_EQ(first.size(), 1u);
+    double level = number(first[0], "visibility_level"), error = number(first[0], "visibility_level_se");
+    EXPECT_GT(error, 0);
+    EXPECT_LT(error, 0.02 * level);
+    // Far from the criterion: one pass whatever -vp allows.
+    EXPECT_EQ(csv(run(line + "-vp 4 sign.rad lamp.rad").out)[0].at("visibility_level_se"), first[0].at("visibility_level_se"));
+    std::ostringstream near;
+    near << "-vl " << level << " -vp 2 ";
+    std::vector<Row> second = csv(run(line + near.str() + "sign.rad lamp.rad").out);
+    double ratio = error / number(second[0], "visibility_level_se");
+    EXPECT_GT(ratio, 1.2);
+    EXPECT_LT(ratio, 1.7);
+}
+
 // Maps over a grid: one picture per instant and sign, its pixels the visibility level (0 where a wall hides the
 // sign), and the instant through which it stayed visible, by the light and by Jin's law.
 TEST_F(Vismap, MapsOverAGrid) {

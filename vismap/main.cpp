@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <numeric>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -34,6 +35,7 @@ struct Options {
     std::vector<double> grid;      // x0 y0 x1 y1 step z
     std::vector<double> instants;  // none: the scene's -T, else 0
     int rays = 32;
+    int passes = 4;  // passes of rays at most, the later ones for sight lines whose verdict is uncertain
     VisibilityCriteria criteria{{}, 10, 0.5};
     double reportInterval = 0;
 };
@@ -63,6 +65,7 @@ OptionTable makeTable(Options& o) {
     t.add("-wp", 1, "observers at waypoints: lines 'name x y z'", [&o](const auto& a) { o.waypoints = a[0]; });
     t.add("-o", 1, "prefix of the maps written (with -g)", [&o](const auto& a) { o.prefix = a[0]; });
     addIntOption(t, "-vr", o.rays, "rays to each sign and to its background per observer and instant");
+    addIntOption(t, "-vp", o.passes, "passes of -vr rays at most: more for sight lines near the criterion");
     addRealOption(t, "-vl", o.criteria.minimumLevel, "the visibility level a visible sign reaches");
     addRealOption(t, "-va", o.criteria.observer.age, "the observer's age (years, 23-75)");
     addRealOption(t, "-vt", o.criteria.observer.seconds, "the observation time (s)");
@@ -123,23 +126,32 @@ std::vector<Aim> aims(const std::vector<Observer>& observers, const std::vector<
     return out;
 }
 
+// The luminances one observer's rays to one sign brought, summed over passes.
 struct Tally {
-    double signSum = 0, backgroundSum = 0;
+    double signSum = 0, signSquares = 0, backgroundSum = 0, backgroundSquares = 0;
     int signRays = 0, signHits = 0, backgroundRays = 0;
 };
+
+double mean(double sum, int n) { return n ? sum / n : 0; }
+// The standard error of a mean of n values from their sum and sum of squares (0 for fewer than two).
+double standardError(double sum, double squares, int n) {
+    if (n < 2) return 0;
+    double m = sum / n;
+    return std::sqrt(std::max(0.0, squares / n - m * m) / (n - 1));
+}
 
 void writeCsvHead() {
     std::printf("instant_s,observer,x,y,z,sign,kind,distance_m,sign_cd_m2,background_cd_m2,contrast,size_arcmin,"
                 "threshold_cd_m2,visibility_level,verdict,seen_share,optical_depth,mean_extinction_1_m,jin_distance_m,"
-                "jin_verdict\n");
+                "jin_verdict,visibility_level_se\n");
 }
 
 void writeCsvRow(double t, const Observer& o, const Sign& s, const SightMeasure& m, const SightJudgement& j) {
-    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s\n", t, o.name.c_str(),
+    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s,%.3g\n", t, o.name.c_str(),
                 o.eye.x, o.eye.y, o.eye.z, s.name.c_str(), s.kind == SignKind::Emitting ? "emitting" : "reflecting",
                 m.distance, m.signLuminance, m.backgroundLuminance, j.contrast, j.angularSize, j.threshold,
                 j.visibilityLevel, verdictName(j.verdict), m.seenShare, m.opticalDepth, j.meanExtinction,
-                j.jinDistance, j.jinVisible ? "visible" : "not-visible");
+                j.jinDistance, j.jinVisible ? "visible" : "not-visible", j.levelError);
 }
 
 // A map over the grid's cells, one value per observer (the same in R, G and B: a data picture for falsecolor).
@@ -156,6 +168,13 @@ void writeMap(const std::string& path, const ObserverGrid& g, const std::vector<
     writeWhole(path, [&](std::ostream& out) { writeRadiancePicture(out, p); });
 }
 
+// Whether a sight line's verdict could go the other way by the rays' noise: its visibility level within two
+// standard errors of the criterion (a sign seen, not hidden).
+bool uncertain(const SightJudgement& j, const VisibilityCriteria& c) {
+    bool seen = j.verdict == Verdict::Visible || j.verdict == Verdict::BelowThreshold;
+    return seen && std::abs(j.visibilityLevel - c.minimumLevel) < 2 * j.levelError;
+}
+
 // How long each sign stays visible from each observer, instant by instant: by the light and by Jin's law.
 struct Endurance {
     std::vector<double> light, jin;  // the last instant through which the sign stayed visible from the first
@@ -169,23 +188,21 @@ struct Endurance {
     }
 };
 
-// The luminances the rays of one instant brought, summed per observer and sign.
-std::vector<Tally> tally(const std::vector<Aim>& rays, const std::vector<RayRecord>& records,
-                         const std::vector<SignTargets>& signs, size_t pairs) {
-    std::vector<Tally> out(pairs);
-    for (size_t i = 0; i < rays.size(); ++i) {
-        const Aim& a = rays[i];
-        Tally& t = out[a.pair];
+// Adds what the rays `traced` (indices into `rays`) brought, `records` in the same order, to their sight lines.
+void addTo(std::vector<Tally>& tallies, const std::vector<size_t>& traced, const std::vector<Aim>& rays,
+           const std::vector<RayRecord>& records, const std::vector<SignTargets>& signs) {
+    for (size_t i = 0; i < traced.size(); ++i) {
+        const Aim& a = rays[traced[i]];
+        Tally& t = tallies[a.pair];
         const double luminance = kWhiteEfficacy * photopic(records[i].value);
         const bool metSign = records[i].surfaceObject == signs[a.pair % signs.size()].sign.object;
         if (a.onSign) {
             ++t.signRays;
-            if (metSign) ++t.signHits, t.signSum += luminance;
+            if (metSign) ++t.signHits, t.signSum += luminance, t.signSquares += luminance * luminance;
         } else if (!metSign) {  // the band's rays that graze the sign's edge do not count
-            ++t.backgroundRays, t.backgroundSum += luminance;
+            ++t.backgroundRays, t.backgroundSum += luminance, t.backgroundSquares += luminance * luminance;
         }
     }
-    return out;
 }
 
 SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, const Integrator& integrator,
@@ -194,8 +211,10 @@ SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t,
     const dvec3 toEye = observer.eye - sign.centre;
     m.distance = glm::length(toEye);
     m.facing = facing(sign, observer.eye);
-    m.signLuminance = t.signHits ? t.signSum / t.signHits : 0;
-    m.backgroundLuminance = t.backgroundRays ? t.backgroundSum / t.backgroundRays : 0;
+    m.signLuminance = mean(t.signSum, t.signHits);
+    m.backgroundLuminance = mean(t.backgroundSum, t.backgroundRays);
+    m.signError = standardError(t.signSum, t.signSquares, t.signHits);
+    m.backgroundError = standardError(t.backgroundSum, t.backgroundSquares, t.backgroundRays);
     m.seenShare = t.signRays ? double(t.signHits) / t.signRays : 0;
     // A sign small beside its distance: its area times the cosine over the distance squared.
     m.solidAngle = m.facing ? sign.shape.area * glm::dot(sign.shape.normal, toEye) / std::pow(m.distance, 3) : 0;
@@ -226,6 +245,7 @@ int run(int argc, char** argv) {
     if (o.irradianceAtHit) throw UsageError("-i: a study traces the light that reaches the eye", kUsage);
     if (o.signs.empty()) throw UsageError("no signs (-S)", kUsage);
     if (o.rays < 1) throw UsageError("-vr: at least one ray", kUsage);
+    if (o.passes < 1) throw UsageError("-vp: at least one pass", kUsage);
     if (!o.prefix.empty() && o.grid.empty()) throw UsageError("-o: maps need observers on a grid (-g)", kUsage);
     std::vector<Observer> observers = loadObservers(o);
     setSpectralSampling(o.render.sampling);
@@ -241,26 +261,38 @@ int run(int argc, char** argv) {
     const std::vector<Aim> rays = aims(observers, signs);
     const size_t pairs = observers.size() * signs.size();
     ProgressMeter progress("vismap", o.reportInterval);
-    progress.start(long(rays.size() * instants.size()));
+    progress.start(long(rays.size() * instants.size()));  // the first passes: later ones are as few as need them
     Endurance endurance(pairs);
     const std::string command = commandLine(line->command);
     writeCsvHead();
     for (double t : instants) {
-        std::vector<RayRecord> records(rays.size());
-        sequence.run(rays.size(), t, [&](size_t i, WorkItem& item) {
-            const Aim& a = rays[i];
-            const dvec3 eye = observers[a.pair / signs.size()].eye;
-            records[i] = integrator.trace({eye, glm::normalize(a.target - eye), i, t}, item);
-            progress.advance(1, 1);
-        });
-        std::vector<Tally> tallies = tally(rays, records, signs, pairs);
+        std::vector<Tally> tallies(pairs);
+        std::vector<SightMeasure> measures(pairs);
+        std::vector<SightJudgement> judgements(pairs);
+        std::vector<size_t> traced(rays.size());
+        std::iota(traced.begin(), traced.end(), size_t(0));
+        for (int pass = 0; !traced.empty(); ++pass) {
+            std::vector<RayRecord> records(traced.size());
+            sequence.run(traced.size(), t, [&](size_t i, WorkItem& item) {
+                const Aim& a = rays[traced[i]];
+                const dvec3 eye = observers[a.pair / signs.size()].eye;
+                records[i] = integrator.trace({eye, glm::normalize(a.target - eye), pass * rays.size() + traced[i], t}, item);
+                if (pass == 0) progress.advance(1, 1);
+            });
+            addTo(tallies, traced, rays, records, signs);
+            std::vector<bool> again(pairs, false);
+            for (size_t pair = 0; pair < pairs; ++pair) {
+                const Sign& sign = signs[pair % signs.size()].sign;
+                measures[pair] = measure(observers[pair / signs.size()], sign, tallies[pair], integrator, t);
+                judgements[pair] = judge(measures[pair], sign.jinConstant, o.criteria);
+                again[pair] = pass + 1 < o.passes && uncertain(judgements[pair], o.criteria);
+            }
+            std::erase_if(traced, [&](size_t i) { return !again[rays[i].pair]; });
+        }
         std::vector<double> levels(pairs);
         for (size_t pair = 0; pair < pairs; ++pair) {
-            const Observer& observer = observers[pair / signs.size()];
-            const Sign& sign = signs[pair % signs.size()].sign;
-            SightMeasure m = measure(observer, sign, tallies[pair], integrator, t);
-            SightJudgement j = judge(m, sign.jinConstant, o.criteria);
-            writeCsvRow(t, observer, sign, m, j);
+            const SightJudgement& j = judgements[pair];
+            writeCsvRow(t, observers[pair / signs.size()], signs[pair % signs.size()].sign, measures[pair], j);
             levels[pair] = j.verdict == Verdict::Hidden || j.verdict == Verdict::Behind ? 0 : j.visibilityLevel;
             endurance.add(pair, t, j);
         }

@@ -31,6 +31,7 @@ SightJudgement judge(const SightMeasure& m, double jinConstant, const Visibility
     j.contrast = m.backgroundLuminance > 0 ? difference / m.backgroundLuminance : 0;
     j.threshold = adrianThreshold(m.backgroundLuminance, j.angularSize, difference >= 0, criteria.observer);
     j.visibilityLevel = j.threshold > 0 ? std::abs(difference) / j.threshold : 0;
+    j.levelError = j.threshold > 0 ? std::hypot(m.signError, m.backgroundError) / j.threshold : 0;
     if (m.seenShare < criteria.minimumSeenShare) j.verdict = Verdict::Hidden;
     else j.verdict = j.visibilityLevel >= criteria.minimumLevel ? Verdict::Visible : Verdict::BelowThreshold;
     return j;

@@ -14,6 +14,7 @@ struct SightMeasure {
     double distance = 0;             // eye to the sign's centre (m)
     double signLuminance = 0;        // cd/m², the mean over the sign's points whose rays met the sign
     double backgroundLuminance = 0;  // cd/m², the mean over the band around it
+    double signError = 0, backgroundError = 0;  // cd/m², the standard errors of those means (the rays' noise)
     double seenShare = 0;            // the share of the sign's rays that met the sign (the rest met something before)
     double solidAngle = 0;           // sr, of the sign from the eye (projected, its far side hidden)
     double opticalDepth = 0;         // ∫K along the line to the sign's centre
@@ -34,6 +35,7 @@ struct SightJudgement {
     double angularSize = 0;          // arc minutes: the side of a square of the sign's solid angle
     double threshold = 0;            // cd/m², Adrian's ΔL at the background's luminance and that size
     double visibilityLevel = 0;      // |L_sign − L_background| / threshold
+    double levelError = 0;           // its standard error from the luminances' (the threshold taken as exact)
     Verdict verdict = Verdict::Hidden;
     double meanExtinction = 0;       // 1/m: the optical depth over the distance
     double jinDistance = 0;          // m: Jin's S = C / K with K that mean (infinite in clear air)

@@ -41,6 +41,9 @@ TEST(Sight, VisibilityLevelIsTheDifferenceOverAdriansThreshold) {
     EXPECT_NEAR(j.threshold, adrianThreshold(20, arcmin, true, c.observer), 1e-12);
     EXPECT_NEAR(j.visibilityLevel, 130 / j.threshold, 1e-9);
     EXPECT_EQ(j.verdict, Verdict::Visible);
+    SightMeasure noisy = measure(150, 20, 5, 0);
+    noisy.signError = 3, noisy.backgroundError = 4;
+    EXPECT_NEAR(judge(noisy, 8, c).levelError, 5 / j.threshold, 1e-12);
     // A veil of 20 cd/m² added to both lowers the contrast, not the difference; the threshold grows with
     // the background.
     SightJudgement veiled = judge(measure(170, 40, 5, 0), 8, c);
