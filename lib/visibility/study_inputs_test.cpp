@@ -19,6 +19,15 @@ std::string errorOf(Read read) {
     return "no error";
 }
 
+// The error `read(in, name)` gives for the text `text` named `name`.
+template <typename Reader>
+std::string errorReading(Reader read, const std::string& text, const std::string& name) {
+    return errorOf([&] {
+        std::istringstream in(text);
+        read(in, name);
+    });
+}
+
 TEST(SignList, ReadsKindsAndJinsConstants) {
     std::istringstream in("# signs\nexit_a emitting\n\nplan reflecting 2.5  # a floor plan\nexit_b emitting 6\n");
     std::vector<SignEntry> signs = readSignList(in, "signs.txt");
@@ -29,12 +38,7 @@ TEST(SignList, ReadsKindsAndJinsConstants) {
     EXPECT_EQ(signs[1].jinConstant, 2.5);
     EXPECT_EQ(signs[1].where, "signs.txt:4");
     EXPECT_EQ(signs[2].jinConstant, 6);
-    auto bad = [](const std::string& text) {
-        return errorOf([&] {
-            std::istringstream in(text);
-            readSignList(in, "s");
-        });
-    };
+    auto bad = [](const std::string& text) { return errorReading(readSignList, text, "s"); };
     EXPECT_EQ(bad("a glowing\n"), "s:1: sign 'a': kind 'glowing' is neither emitting nor reflecting");
     EXPECT_EQ(bad("\na emitting x\n"), "s:2: sign 'a': Jin's C 'x' is not a number");
     EXPECT_EQ(bad("a emitting -1\n"), "s:1: sign 'a': Jin's C must be > 0");
@@ -60,12 +64,7 @@ TEST(Observers, GridCellsAndWaypoints) {
     ASSERT_EQ(w.size(), 2u);
     EXPECT_EQ(w[1].name, "mid");
     EXPECT_EQ(w[1].eye, glm::dvec3(12, 3, 1.6));
-    auto bad = [](const std::string& text) {
-        return errorOf([&] {
-            std::istringstream in(text);
-            readWaypoints(in, "r");
-        });
-    };
+    auto bad = [](const std::string& text) { return errorReading(readWaypoints, text, "r"); };
     EXPECT_EQ(bad("a 1 2\n"), "r:1: expected 'name x y z', found 3 words");
     EXPECT_EQ(bad("a 1 2 z\n"), "r:1: z 'z' is not a number");
     EXPECT_EQ(bad("a 1 2 3\na 1 2 3\n"), "r:2: waypoint 'a' is named twice");
