@@ -225,6 +225,21 @@ if [ -f "$fds/model.smv" ]; then
                              jin[k] "/" n[k], differ[k] }
                   printf "  vismap run time: %.2f s\n", t / 1000 }' "$out/hall_$lighting.csv"
     done
+    echo "  The plan sign under emergency lighting, the hall's corner seen from above (x 10-15 m left to right, y 5 m"
+    echo "  at the top, the sign at y = 0, x 12.3-12.7): the last instant through which each place sees it"
+    echo "  (. lost by 60 s, 1: through 60 s, 2: 120 s, 3: 180 s), by the light | by Jin's law"
+    awk -F, -v S=plan_sign '
+        NR > 1 && $6 == S { split($2, parts, "_"); x = parts[2] + 0; y = parts[3] + 0; k = x "," y
+                            i = ($1 == 60) ? 1 : ($1 == 120) ? 2 : 3
+                            if (!(k in light)) { light[k] = 0; jin[k] = 0 }
+                            if ($15 == "visible" && light[k] == i - 1) light[k] = i
+                            if ($20 == "visible" && jin[k] == i - 1) jin[k] = i
+                            if (x > mx) mx = x; if (y > my) my = y }
+        END { for (y = 0; y <= my; y++) { line = "    "
+                  for (x = 0; x <= mx; x++) line = line (light[x "," y] ? light[x "," y] : ".")
+                  line = line "    "
+                  for (x = 0; x <= mx; x++) line = line (jin[x "," y] ? jin[x "," y] : ".")
+                  print line } }' "$out/hall_emergency.csv"
     echo "(a sign that reflects the light is lost in the dim emergency lighting long before Jin's law says so:"
     echo " the law sees the smoke, not the light; maps: demo/hall_*_until.hdr, demo/hall_*_jin_until.hdr)"
     if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
