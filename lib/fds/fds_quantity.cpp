@@ -91,11 +91,12 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     }
     source_ = slices ? "cell-centred 3D slices" : "3D smoke files (8-bit opacities)";
     std::vector<bool> covered(smv.meshes.size());
-    std::vector<const FdsFile*> chosen;  // one file per mesh
+    std::vector<std::string> absent(smv.meshes.size());  // a file of the mesh listed in the index, not there
+    std::vector<const FdsFile*> chosen;                  // one file per mesh
     for (const FdsFile& f : smv.files) {
         if (!(slices ? volumeSlice(f) : smoke3d(f)) || covered[size_t(f.mesh)]) continue;
         if (!fileExists(f.path)) {
-            warnings_.push_back(f.path + ": listed in " + smv.path + " but absent");
+            absent[size_t(f.mesh)] = f.path;
             continue;
         }
         chosen.push_back(&f);
@@ -110,7 +111,9 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     for (size_t m = 0; m < covered.size(); ++m)
         if (!covered[m])
             warnings_.push_back(smv.path + ": mesh " + std::to_string(m + 1) + " (" + smv.meshes[m].id + ") has no " +
-                                source_ + " of '" + quantity + "': it is left empty");
+                                source_ + " of '" + quantity + "'" +
+                                (absent[m].empty() ? "" : " (" + absent[m] + " is listed but absent)") +
+                                ": it is left empty");
     if (units_ == "C") units_ = "K", offset_ = 273.15;
     times_ = meshes_.front().times;
     if (times_.empty()) throw Error(smv.path + ": the files of '" + quantity + "' hold no frames");
