@@ -4,10 +4,11 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
-#include <numeric>
 #include <cstdio>
 #include <fstream>
-#include <iostream>
+#include <functional>
+#include <limits>
+#include <numeric>
 #include <sstream>
 
 #include "integrator/render_options.h"
@@ -33,7 +34,7 @@ struct Options {
     bool irradianceAtHit = false;  // rtrace's -i, which a study has no use for
     std::string signs, waypoints, prefix;
     std::vector<double> grid;      // x0 y0 x1 y1 step z
-    std::vector<double> instants;  // none: the scene's -T, else 0
+    std::vector<double> instants;  // none: 0
     int rays = 32;
     int passes = 4;  // passes of rays at most, the later ones for sight lines whose verdict is uncertain
     VisibilityCriteria criteria{{}, 10, 0.5};
@@ -251,7 +252,7 @@ int run(int argc, char** argv) {
     setSpectralSampling(o.render.sampling);
     Scene scene = loadScene(line->scene);
     std::vector<SignTargets> signs = loadSigns(o.signs, scene, o.rays);
-    std::vector<double> instants = o.instants.empty() ? std::vector<double>{o.render.time.value_or(0)} : o.instants;
+    std::vector<double> instants = o.instants.empty() ? std::vector<double>{0} : o.instants;
     RenderScene renderScene(scene, o.render.materials);
     Sequence sequence(scene, renderScene, o.render);
     const Integrator& integrator = sequence.integrator();
