@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "integrator/render_options.h"
@@ -105,9 +106,8 @@ std::vector<SignTargets> loadSigns(const std::string& path, const Scene& scene, 
     return out;
 }
 
-std::vector<Observer> loadObservers(const Options& o) {
-    if (o.grid.empty() == o.waypoints.empty()) throw UsageError("give observers either on a grid (-g) or at waypoints (-wp)", kUsage);
-    if (!o.grid.empty()) return gridObservers(makeGrid(o.grid[0], o.grid[1], o.grid[2], o.grid[3], o.grid[4]), o.grid[5]);
+std::vector<Observer> loadObservers(const Options& o, const std::optional<ObserverGrid>& grid) {
+    if (grid) return gridObservers(*grid, o.grid[5]);
     std::ifstream in(o.waypoints);
     if (!in) throw Error(o.waypoints + ": cannot be opened");
     return readWaypoints(in, o.waypoints);
@@ -206,8 +206,13 @@ void addTo(std::vector<Tally>& tallies, const std::vector<size_t>& traced, const
     }
 }
 
-SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, const Integrator& integrator,
-                     double time) {
+// ∫K along the line from the eye to the sign's centre at `time` (exact: the same on every pass of rays).
+double opticalDepth(const Observer& observer, const Sign& sign, const Integrator& integrator, double time) {
+    const double through = photopic(integrator.transmittanceBetween(observer.eye, sign.centre, time));
+    return through >= 1 ? 0 : through > 0 ? -std::log(through) : std::numeric_limits<double>::infinity();
+}
+
+SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, double opticalDepth) {
     SightMeasure m;
     const dvec3 toEye = observer.eye - sign.centre;
     m.distance = glm::length(toEye);
@@ -219,20 +224,18 @@ SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t,
     m.seenShare = t.signRays ? double(t.signHits) / t.signRays : 0;
     // A sign small beside its distance: its area times the cosine over the distance squared.
     m.solidAngle = m.facing ? sign.shape.area * glm::dot(sign.shape.normal, toEye) / std::pow(m.distance, 3) : 0;
-    const double through = photopic(integrator.transmittanceBetween(observer.eye, sign.centre, time));
-    m.opticalDepth = through >= 1 ? 0 : through > 0 ? -std::log(through) : std::numeric_limits<double>::infinity();
+    m.opticalDepth = opticalDepth;
     return m;
 }
 
 // One map per sign: `value(pair)` of each observer.
-void writeMaps(const Options& o, const std::vector<Observer>& observers, const std::vector<SignTargets>& signs,
-               const std::string& suffix, const std::string& what, const std::function<double(size_t)>& value,
-               const std::string& command) {
-    ObserverGrid g = makeGrid(o.grid[0], o.grid[1], o.grid[2], o.grid[3], o.grid[4]);
+void writeMaps(const std::string& prefix, const ObserverGrid& g, const std::vector<Observer>& observers,
+               const std::vector<SignTargets>& signs, const std::string& suffix, const std::string& what,
+               const std::function<double(size_t)>& value, const std::string& command) {
     for (size_t s = 0; s < signs.size(); ++s) {
         std::vector<double> values;
         for (size_t ob = 0; ob < observers.size(); ++ob) values.push_back(value(ob * signs.size() + s));
-        writeMap(o.prefix + "_" + signs[s].sign.name + suffix, g, observers, values,
+        writeMap(prefix + "_" + signs[s].sign.name + suffix, g, observers, values,
                  what + " of sign " + signs[s].sign.name, command);
     }
 }
@@ -248,7 +251,10 @@ int run(int argc, char** argv) {
     if (o.rays < 1) throw UsageError("-vr: at least one ray", kUsage);
     if (o.passes < 1) throw UsageError("-vp: at least one pass", kUsage);
     if (!o.prefix.empty() && o.grid.empty()) throw UsageError("-o: maps need observers on a grid (-g)", kUsage);
-    std::vector<Observer> observers = loadObservers(o);
+    if (o.grid.empty() == o.waypoints.empty()) throw UsageError("give observers either on a grid (-g) or at waypoints (-wp)", kUsage);
+    std::optional<ObserverGrid> grid;
+    if (!o.grid.empty()) grid = makeGrid(o.grid[0], o.grid[1], o.grid[2], o.grid[3], o.grid[4]);
+    std::vector<Observer> observers = loadObservers(o, grid);
     setSpectralSampling(o.render.sampling);
     Scene scene = loadScene(line->scene);
     std::vector<SignTargets> signs = loadSigns(o.signs, scene, o.rays);
@@ -270,6 +276,8 @@ int run(int argc, char** argv) {
         std::vector<Tally> tallies(pairs);
         std::vector<SightMeasure> measures(pairs);
         std::vector<SightJudgement> judgements(pairs);
+        std::vector<double> depths(pairs);  // once the first pass has prepared the smoke at t
+        std::vector<bool> inPass(pairs, true);  // the sight lines the pass traces rays for
         std::vector<size_t> traced(rays.size());
         std::iota(traced.begin(), traced.end(), size_t(0));
         for (int pass = 0; !traced.empty(); ++pass) {
@@ -281,14 +289,16 @@ int run(int argc, char** argv) {
                 if (pass == 0) progress.advance(1, 1);
             });
             addTo(tallies, traced, rays, records, signs);
-            std::vector<bool> again(pairs, false);
             for (size_t pair = 0; pair < pairs; ++pair) {
+                if (!inPass[pair]) continue;
                 const Sign& sign = signs[pair % signs.size()].sign;
-                measures[pair] = measure(observers[pair / signs.size()], sign, tallies[pair], integrator, t);
+                const Observer& observer = observers[pair / signs.size()];
+                if (pass == 0) depths[pair] = opticalDepth(observer, sign, integrator, t);
+                measures[pair] = measure(observer, sign, tallies[pair], depths[pair]);
                 judgements[pair] = judge(measures[pair], sign.jinConstant, o.criteria);
-                again[pair] = pass + 1 < o.passes && uncertain(judgements[pair], o.criteria);
+                inPass[pair] = pass + 1 < o.passes && uncertain(judgements[pair], o.criteria);
             }
-            std::erase_if(traced, [&](size_t i) { return !again[rays[i].pair]; });
+            std::erase_if(traced, [&](size_t i) { return !inPass[rays[i].pair]; });
         }
         std::vector<double> levels(pairs);
         for (size_t pair = 0; pair < pairs; ++pair) {
@@ -301,15 +311,15 @@ int run(int argc, char** argv) {
         char suffix[64];
         std::snprintf(suffix, sizeof suffix, "_%g.hdr", t);
         if (!o.prefix.empty())
-            writeMaps(o, observers, signs, suffix, "visibility level at t = " + std::to_string(t) + " s (0: hidden)",
+            writeMaps(o.prefix, *grid, observers, signs, suffix, "visibility level at t = " + std::to_string(t) + " s (0: hidden)",
                       [&](size_t pair) { return levels[pair]; }, command);
     }
     progress.finish();
     if (!o.prefix.empty()) {
         const std::string until = "the last instant (s) through which it stayed visible from the first (0: not then)";
-        writeMaps(o, observers, signs, "_until.hdr", "by the light, " + until,
+        writeMaps(o.prefix, *grid, observers, signs, "_until.hdr", "by the light, " + until,
                   [&](size_t pair) { return endurance.light[pair]; }, command);
-        writeMaps(o, observers, signs, "_jin_until.hdr", "by Jin's law, " + until,
+        writeMaps(o.prefix, *grid, observers, signs, "_jin_until.hdr", "by Jin's law, " + until,
                   [&](size_t pair) { return endurance.jin[pair]; }, command);
     }
     return 0;
