@@ -266,6 +266,16 @@ TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
     EXPECT_NE(r.err.find("-o: maps need observers on a grid (-g)"), std::string::npos) << r.err;
     r = error("-S bad_signs.txt -wp route.txt -T 20,10", "sign emitting\n");
     EXPECT_NE(r.err.find("-T: instants must increase"), std::string::npos) << r.err;
+    for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{
+             {"-wp route.txt", "no signs (-S)"},
+             {"-S bad_signs.txt -wp route.txt -vr 0", "-vr: at least one ray"},
+             {"-S bad_signs.txt -wp route.txt -vp 0", "-vp: at least one pass"},
+             {"-S bad_signs.txt -wp route.txt -i", "-i: a study traces the light that reaches the eye"}}) {
+        r = error(options, "sign emitting\n");
+        EXPECT_NE(r.status, 0) << options;
+        EXPECT_EQ(r.out, "") << options;
+        EXPECT_NE(r.err.find(message), std::string::npos) << options << ": " << r.err;
+    }
     r = error("-S nowhere.txt -wp route.txt", "");
     EXPECT_EQ(r.err, "vismap: nowhere.txt: cannot be opened\n");
     EXPECT_EQ(r.out, "");

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "fds/slice_file.h"
 #include "fds/testing.h"
+#include "scratch_dir.h"
 #include "util/error.h"
 
 namespace brume {
@@ -108,6 +111,48 @@ TEST(FdsQuantity, CoarserMeshesFillSeveralVoxelsPerCell) {
                   std::string::npos)
             << e.what();
     }
+}
+
+// What the import refuses, named: a quantity the case lacks, a stretched mesh, a mesh off the first one's lattice,
+// a slice whose index range is not the one the index lists. Each from the committed case's index, one line changed.
+TEST(FdsQuantity, RefusesCasesItCannotPutOnOneLattice) {
+    // A copy of the case, so that edited indexes lie beside its files without writing into the source tree.
+    const std::string dir = brume_test::scratchDir("fds_edited").string();
+    for (const auto& file : std::filesystem::directory_iterator(fds_test::twoMeshCase()))
+        std::filesystem::copy_file(file.path(), dir + "/" + file.path().filename().string(),
+                                   std::filesystem::copy_options::overwrite_existing);
+    std::ifstream in(dir + "/two_mesh_smoke.smv");
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    auto errorWith = [&](const std::string& from, const std::string& to, size_t occurrence,
+                         const std::string& quantity = "SOOT DENSITY") {
+        std::string edited = text;
+        size_t at = 0;
+        for (size_t k = 0; k <= occurrence; ++k) at = edited.find(from, k ? at + 1 : 0);
+        if (at == std::string::npos) return std::string("'" + from + "' not found");
+        edited.replace(at, from.size(), to);
+        const std::string path = dir + "/edited.smv";
+        std::ofstream(path) << edited;
+        std::string message = "no error";
+        try {
+            FdsQuantity(readSmv(path), quantity);
+        } catch (const Error& e) {
+            message = e.what();
+        }
+        std::filesystem::remove(path);
+        for (size_t p = message.find(path); p != std::string::npos; p = message.find(path)) message.replace(p, path.size(), "case.smv");
+        for (size_t p = message.find(dir + "/"); p != std::string::npos; p = message.find(dir + "/")) message.erase(p, dir.size() + 1);
+        return message;
+    };
+    // The case's 3D smoke files of HRRPUV and temperature are listed but not kept: only files that are there count.
+    EXPECT_EQ(errorWith("", "", 0, "HRRPUV"),
+              "case.smv: no cell-centred 3D slice of 'HRRPUV' (the case has 'SOOT DENSITY', 'SOOT EXTINCTION COEFFICIENT', "
+              "'TEMPERATURE')");
+    EXPECT_EQ(errorWith("    5       1.50000", "    5       1.55000", 0),
+              "case.smv: mesh 2 (right) is stretched: only meshes of even cells are imported");
+    EXPECT_EQ(errorWith("OFFSET\n      0.00000", "OFFSET\n      0.05000", 1),
+              "case.smv: mesh 2 is not on the lattice of the finest mesh's cells");
+    EXPECT_EQ(errorWith("&     0    10     0    10     0    10 !      1      1", "&     0    10     0    10     0     9 !      1      1", 0),
+              "two_mesh_smoke_1_1.sf: its index range is not the one case.smv lists");
 }
 
 // With the slices set aside, soot comes from the 3D smoke files: node values from 8-bit opacities. Each node's
