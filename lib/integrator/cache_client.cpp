@@ -66,8 +66,18 @@ double CacheClient::nearestSource(const dvec3& p) const {
     return nearest;
 }
 
-int CacheClient::passesFor(const HemisphereSamples& first, double known, int level) const {
-    if (level > 0) return 1;
+double CacheClient::directIrradiance(const RecordRequest& q, const PathState& child, PathContext& ctx) const {
+    const int count = std::max(2, recordDivisions(q) / (16 * std::max<int>(1, int(scene_.lights().size()))));
+    double irradiance = 0;
+    for (const Light& light : scene_.lights()) {
+        SourceSamples arrived;
+        lights_.arriving(light, q.at, q.leaving, count, child, ctx, arrived);
+        for (const SourceSample& s : arrived) irradiance += brightness(s.flux) * glm::dot(*q.at.normal, s.dir);
+    }
+    return irradiance;
+}
+
+int CacheClient::passesFor(const HemisphereSamples& first, double known) const {
     double light = first.meanBrightness() + known;
     return light > 0 ? samplePasses(first.meanStandardError() / light, kNoiseShare * settings_.ambientAccuracy) : 1;
 }
@@ -106,7 +116,8 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
     pass(0);
     double aimedIrradiance = 0;
     for (const AimedSample& a : aimed) aimedIrradiance += brightness(a.irradiance);
-    int passes = passesFor(samples, aimedIrradiance / std::numbers::pi, q.at.level);
+    int passes = q.at.level > 0 ? 1
+                                : passesFor(samples, (aimedIrradiance + directIrradiance(q, child, ctx)) / std::numbers::pi);
     for (int p = 1; p < passes; ++p) pass(samples.addPass());
     for (AimedSample& a : aimed) a.irradiance *= float(1.0 / passes);
     samples.aimed() = std::move(aimed);
@@ -122,7 +133,7 @@ VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scra
     PathState child = recordRays(q, scratch);
     double sourcesLight = 0;
     for (size_t i = 0; i < sources.size(); ++i) {
-        lights_.arriving(scene_.lights()[i], q.at.point, sourceSamples(q), child, ctx, sources[i]);
+        lights_.arriving(scene_.lights()[i], q.at, SurfaceId{}, sourceSamples(q), child, ctx, sources[i]);
         for (const SourceSample& s : sources[i]) sourcesLight += brightness(s.flux);
     }
     SphereSamples samples(q.at.point, firstPassDivisions(q), Spectrum::defaultChannels());

@@ -85,18 +85,23 @@ private:
     // share of -aa. Looser than a surface record's: the rays that look volume records up (view rays, record
     // rays through a medium) gather many along their way, which averages their noise.
     static constexpr double kVolumeNoiseShare = 0.3;
-    // The standard error a record's samples aim for, relative to its light, as a share of -aa: a record's
-    // noise is not an error its zone's neighbours average out, as every lookup in the zone shares it. 1.5 %
-    // at -aa .1: at -ad 1024 daylit rooms' records (1-1.4 %) take one or two passes, while those seeing
-    // through a white fog (about 3 %) take four, and those of a wall behind a lamp's halo in fog (about 5 %)
-    // eight.
+    // The standard error a record's samples aim for, relative to all the light its surface gets (see
+    // passesFor), as a share of -aa: a record's noise is not an error its zone's neighbours average out, as
+    // every lookup in the zone shares it. 1.5 % at -aa .1: at -ad 1024 daylit rooms' records (1-1.4 % of
+    // their indirect light) take one or two passes, while those seeing through a white fog (about 3 %) take
+    // up to four, and those of a wall behind a lamp's halo in fog (about 5 %) up to eight.
     static constexpr double kNoiseShare = 0.15;
 
-    // How many passes over its strata a surface record's rays make (samplePasses), from its `first` pass and
-    // the `known` brightness of samples aimed besides them. Only records for the first bounce take more than
-    // one: a deeper record's noise reaches an answer averaged over the many records a first-bounce record's
-    // rays meet.
-    int passesFor(const HemisphereSamples& first, double known, int level) const;
+    // How many passes over its strata a first-bounce surface record's rays make (samplePasses), from its
+    // `first` pass and the `known` brightness of the rest of the light there (samples aimed besides them, and
+    // the sources' light straight: a record's noise shows on its surface in proportion to all the light the
+    // surface gets, and a wall a lamp lights takes fewer passes than a ceiling it does not; in the smoky
+    // corridor of make demo, 3.4 passes in place of 6.9). Deeper records take one: their noise reaches an
+    // answer averaged over the many records a first-bounce record's rays meet.
+    int passesFor(const HemisphereSamples& first, double known) const;
+    // The irradiance straight from the sources at a surface record's point, from a few shadow rays (-ad / 16
+    // over all sources, at least 2 a source): enough to weigh its share of the light, for passesFor.
+    double directIrradiance(const RecordRequest& request, const PathState& child, PathContext& ctx) const;
     // The same for a volume record's sphere: 1 to kVolumePasses, from its first pass and the brightness
     // `known` of the sources' light (as a mean radiance over the sphere).
     int volumePassesFor(const SphereSamples& first, double known, int level) const;

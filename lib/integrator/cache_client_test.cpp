@@ -138,6 +138,31 @@ TEST(CacheClient, ARecordInAUniformSurroundingHoldsPiL) {
     EXPECT_TRUE(next.requests.empty());
 }
 
+// A first-bounce surface record's passes follow its standard error against all the light its surface gets.
+// Where every other ray brings 0 or 2L at random, the first pass's relative error is about 1/√64 = 12 %, eight
+// times and more the 1.5 % -aa .1 asks for: eight passes (the most), 512 rays. Under a lamp whose light
+// straight on the floor is some 20 times the rest (a 1 m square of radiance 200, 1 m up: E ≈ 140), the same
+// noise is 0.6 % of the whole: one pass. A lamp under the floor, behind it, lights nothing there: eight.
+TEST(CacheClient, ASurfaceRecordsPassesFollowItsStandardErrorAgainstAllItsLight) {
+    auto rays = [](const std::string& lamp) {
+        Cache cache;
+        Parts parts(kFloor + "void light bright 0 0 3 200 200 200\n" + lamp, cached(64), &cache.store);
+        parts.tracer.byRay = [](const Ray& ray) {
+            double hash = std::sin(glm::dot(ray.dir, dvec3(12.9898, 78.233, 37.719)) * 43758.5453);
+            return Spectrum(hash - std::floor(hash) < 0.5 ? 0.f : 2 * kL);
+        };
+        Lookup lookup{parts};
+        CacheVisit visit;
+        parts.cache.makeRecord(lookup.request(), parts.scratch, visit);
+        return double(parts.tracer.rays.size());
+    };
+    const std::string above = "bright polygon over 0 0 12  -.2 -.9 1  -.2 .1 1  .8 .1 1  .8 -.9 1\n";
+    const std::string under = "bright polygon beneath 0 0 12  -.2 -.9 -1  .8 -.9 -1  .8 .1 -1  -.2 .1 -1\n";
+    EXPECT_NEAR(rays(""), 512, 64);
+    EXPECT_NEAR(rays(above), 64, 8);
+    EXPECT_NEAR(rays(under), 512, 64);
+}
+
 // A first-bounce volume record's sphere: a first pass of a quarter of -ad, then more passes where its rays'
 // standard error, against all the light, asks for them. In a uniform surrounding the strata agree (no error):
 // one pass, 256 / 4 rays (± 8: whole rows and columns), its mean L (1e-5). Where every other ray brings 0 or

@@ -202,23 +202,24 @@ Occlusion LightSampler::passage(const Ray& shadow, const Light& light, double di
     return seen;
 }
 
-void LightSampler::arriving(const Light& light, const dvec3& point, int count, const PathState& state,
-                            PathContext& ctx, SourceSamples& out) const {
+void LightSampler::arriving(const Light& light, const Receiver& at, const SurfaceId& leaving, int count,
+                            const PathState& state, PathContext& ctx, SourceSamples& out) const {
     const Emitter& e = light.emitter();
-    if (!samplesSource(light, SurfaceId{}) || e.radiance.isBlack()) return;
+    if (!samplesSource(light, leaving) || e.radiance.isBlack()) return;
     uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
-    LightView view = light.view(point);
+    LightView view = light.view(at.point);
     Spectrum scratch;
     for (int k = 0; k < count; ++k) {
         double u, v;
         sobol2D(k, scramble, u, v);
         auto s = light.sample(view, u, v);
         if (!s || (e.kind == Emitter::Kind::Glow && s->distance > e.glowRadius)) continue;
+        if (at.normal && !(glm::dot(*at.normal, s->dir) > 0)) continue;
         Spectrum t;
-        Occlusion seen = passage(Ray{point, s->dir, std::numeric_limits<double>::infinity(), SurfaceId{}}, light,
+        Occlusion seen = passage(Ray{at.point, s->dir, std::numeric_limits<double>::infinity(), leaving}, light,
                                  s->distance, state, ctx, t);
         if (seen == Occlusion::Blocked) continue;
-        Spectrum flux = sourceRadiance(light, *s, point, scratch, ctx.scratch.patterns) * float(1 / (s->pdf * count));
+        Spectrum flux = sourceRadiance(light, *s, at.point, scratch, ctx.scratch.patterns) * float(1 / (s->pdf * count));
         if (seen == Occlusion::Unsure) flux *= t;
         if (!flux.isBlack()) out.push_back({s->dir, s->distance, flux});
     }

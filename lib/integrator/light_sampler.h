@@ -36,10 +36,12 @@ public:
     // What volume records leave to next-event estimation at a point in a medium: the flames' light and the
     // sources' seen in flat mirrors (they hold the rest, see arriving).
     Spectrum besidesRecords(const Scatterer& at, const PathState& state, PathContext& ctx) const;
-    // `count` stratified samples of `light`'s light arriving straight at `point` in a medium, as much as gets
-    // through what lies between (none that is blocked), for a volume record.
-    void arriving(const Light& light, const dvec3& point, int count, const PathState& state, PathContext& ctx,
-                  SourceSamples& out) const;
+    // `count` stratified samples of `light`'s light arriving straight at `at`, as much as gets through what lies
+    // between (none that is blocked): at a point in a medium for a volume record, or on the side of surface
+    // `leaving` that `at`'s normal faces (samples from behind it left out) for a surface record's estimate of
+    // its direct light.
+    void arriving(const Light& light, const Receiver& at, const SurfaceId& leaving, int count, const PathState& state,
+                  PathContext& ctx, SourceSamples& out) const;
     // One source's light scattered toward the viewer by `at`.
     Spectrum fromSource(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
                         PathContext& ctx) const {
