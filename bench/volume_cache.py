@@ -24,10 +24,13 @@ rays' errors over that RMS (splotches: a tail far beyond normal errors' 3.3; of 
 of the cache's -af file (its records). One thread, CPU seconds. The time
 to an error is interpolated along each ladder in log-log (bench.time_to); "sooner" is path tracing's time over
 the cache's at the smallest error both reach.
+The pictures' references, STORED_REPEATS path-traced repeats each (own error ~1 %, about an hour of CPU each),
+are kept in results/volume_cache_references.json and used when there (--remake-reference makes them anew).
 Writes results/NAME.md and results/NAME_time_vs_error.png (NAME volume_cache unless --name says otherwise).
 Skipped without ../shared/data.
 """
 import argparse
+import json
 import os
 import sys
 import tempfile
@@ -46,6 +49,8 @@ PICTURE_REFERENCE_REPEATS = 32
 PICTURE_PATHS = [1, 4]
 PICTURE_CACHED = [(1, ".1"), (1, ".05")]
 FINER = 4  # the larger picture's pixels across one of PICTURE's
+STORED = os.path.join(RESULTS, "volume_cache_references.json")
+STORED_REPEATS = 128
 SENSORS = [(10.05 + 0.1 * i, 2.1 + 0.2 * j, 0.8, 0, 0, 1) for i in range(50) for j in range(10)]
 
 
@@ -148,6 +153,30 @@ def extrapolated(paths, cached, own):
     return f"{100 * true_c ** .5:.2f} %: {tp:.0f} s / {tc:.0f} s = {tp / tc:.1f}x"
 
 
+def reference_of(args, tmp, case):
+    """The case's reference luminances and their repeats: a picture's as kept in STORED under the smaller
+    picture's label (made and kept there with --remake-reference), else traced now."""
+    label, repeats = case[0], case[5][0]
+
+    def traced(n):
+        return rtrace(args.bin, tmp, case, n, ["-aa", "0", "-u+"], threads=2)[0]
+
+    if "picture" not in label:
+        return traced(repeats), repeats
+    name = label.replace(f"{PICTURE[0] * FINER} x {PICTURE[1] * FINER}", f"{PICTURE[0]} x {PICTURE[1]}")
+    stored = {}
+    if os.path.exists(STORED):
+        with open(STORED) as f:
+            stored = json.load(f)
+    if args.remake_reference:
+        stored[name] = {"repeats": STORED_REPEATS, "values": traced(STORED_REPEATS)}
+        with open(STORED, "w") as f:
+            json.dump(stored, f)
+    if name in stored:
+        return stored[name]["values"], stored[name]["repeats"]
+    return traced(repeats), repeats
+
+
 def plot(series, png):
     return ladders_plot(series, png, "Brume: view rays through lit smoke, volume cache (o) against path tracing (s)",
                         ": ", "cache")
@@ -158,6 +187,7 @@ def main():
     ap.add_argument("--bin", default=os.path.join(os.path.dirname(HERE), "build", "bin"))
     ap.add_argument("--only", nargs="*", default=[], help="cases whose label contains one of these")
     ap.add_argument("--name", default="volume_cache", help="the results' file names (results/NAME.md, ...)")
+    ap.add_argument("--remake-reference", action="store_true", help="trace the pictures' references anew")
     args = ap.parse_args()
     if not os.path.isdir(SOOT):
         print(f"volume_cache: no {SOOT}: skipped", file=sys.stderr)
@@ -166,16 +196,16 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         measured = {}  # the reference and path tracing's ladder of each case's rays, for the larger picture
         for case in cases(tmp, args.only):
-            label, (reference_repeats, path_repeats, cached_rungs), finer = case[0], case[5], case[6]
+            label, (_, path_repeats, cached_rungs), finer = case[0], case[5], case[6]
             key = (tuple(case[1]), tuple(case[3]))
             if key not in measured:
-                reference, _ = rtrace(args.bin, tmp, case, reference_repeats, ["-aa", "0", "-u+"], threads=2)
+                reference, reference_repeats = reference_of(args, tmp, case)
                 paths = []
                 for r in path_repeats:
                     values, cpu = rtrace(args.bin, tmp, case, r, ["-aa", "0", "-u+"])
                     paths.append((cpu, normalised_rms(values, reference), tail(values, reference)))
-                measured[key] = reference, paths
-            reference, paths = measured[key]
+                measured[key] = reference, reference_repeats, paths
+            reference, reference_repeats, paths = measured[key]
             scale = finer[2] ** 2 if finer else 1
             tails = [t for _, _, t in paths]
             paths = [(cpu * scale, e) for cpu, e, _ in paths]

@@ -36,19 +36,27 @@ struct CacheVisit {
 // record is worth), kRecordsPerRound at a time on all threads: make(request, visit) computes one, noting in
 // `visit` (seeded by the request) what its own rays missed; those requests, of deeper bounces and of either
 // kind of record, go to serveDeeper before the next round, so that later records use the records they bring.
+// A round leaves out the requests whose points the records of the rounds before it hold: accept() takes one
+// request per region, and where the zones made are far larger than the regions (in open smoke, zones of
+// 0.3 m beside regions sized by the centimetre zones near walls), a pass whose lookups missed everywhere in
+// a volume would fill it with records of one another's zones (in the smoky corridor's 160 x 120 picture,
+// lookups were held by 79 records on average and up to 1300, which cost 62 % of the run).
 template <class Store, class Make, class ServeDeeper>
 void makeRecords(Store& store, const std::vector<RecordRequest>& requests,
                  const std::function<int(const RecordRequest&)>& missesToPay, const Make& make,
                  const ServeDeeper& serveDeeper) {
     constexpr size_t kRecordsPerRound = 64;  // made together; the next ones may use them
-    std::vector<RecordRequest> accepted = store.accept(requests, missesToPay);
-    for (size_t start = 0; start < accepted.size(); start += kRecordsPerRound) {
-        size_t n = std::min(kRecordsPerRound, accepted.size() - start);
+    const std::vector<RecordRequest> accepted = store.accept(requests, missesToPay);
+    for (size_t next = 0; next < accepted.size();) {
+        std::vector<RecordRequest> round;
+        for (; next < accepted.size() && round.size() < kRecordsPerRound; ++next)
+            if (!store.holds(accepted[next].at)) round.push_back(accepted[next]);
+        const size_t n = round.size();
         std::vector<typename Store::Record> records(n);
         std::vector<CacheVisit> visits(n);
         tbb::parallel_for(size_t(0), n, [&](size_t i) {
-            visits[i].key = accepted[start + i].key;
-            records[i] = make(accepted[start + i], visits[i]);
+            visits[i].key = round[i].key;
+            records[i] = make(round[i], visits[i]);
         });
         store.insert(std::move(records));
         std::vector<RecordRequest> deeper;

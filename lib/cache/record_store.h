@@ -35,6 +35,10 @@ public:
         const Layer* layer = layerAt(at.time);
         return layer && layer->lookup(at, value);
     }
+    // Whether a record of the receiver's instant holds it.
+    bool holds(const Receiver& at) const {
+        return gather(at, [](const Record&, double) {}) > 0;
+    }
     // Calls f(record, weight) for each record of the receiver's instant that holds it (RecordLayer::gather);
     // the weights' sum, 0 where none does.
     template <class F>
