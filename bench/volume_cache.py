@@ -13,8 +13,8 @@ Scenes (those of bench/smoke.py, with indirect light):
             same paths per pixel, 16 times the pixels), at -aa .1 only: a picture of a useful size shares its
             records among more pixels.
   sensors   a grid of 50 x 10 sensors at 0.8 m over the corridor's floor (10 cm along it, 20 cm across), facing up,
-            t = 120 s, albedo .2 and .8, rtrace -I -ab 3: illuminance for a building code, through the smoke; as
-            the pictures (32 reference repeats, path tracing x1 and x4, the cache at -aa .1 and .05 once).
+            t = 120 s, albedo .2 and .8, rtrace -I -ab 3: illuminance for a building code, through the smoke; 32
+            reference repeats, path tracing x1 and x4, the cache at -aa .1 and .05 once (as the pictures).
 At -ab 1 and -ab 3, with -al+ (nothing past -ab bounces, so that path tracing and the cache estimate the same
 light). Path tracing (-aa 0) repeats each ray r = 1, 4, 16, 64 times; the cache (-aa .1, and .05 at the last
 rung) traces the 48 rays r = 1, 4, 16 times in one run, its records shared by all of them (as a picture's are by
