@@ -46,6 +46,10 @@ public:
         value = sum * float(1 / total);
         return true;
     }
+    // Whether a record of the receiver's bounce or shallower holds it.
+    bool holds(const Receiver& at) const {
+        return gather(at, [](const Record&, double) {}) > 0;
+    }
     // Calls f(record, weight) for each record of the receiver's bounce or shallower whose zone holds it (weight
     // > 0), its value at the receiver (Kind::weigh's) in `value` first if given; returns the weights' sum.
     template <class F>
@@ -82,8 +86,7 @@ public:
     std::optional<std::pair<uint64_t, RecordRequest>> takeRegion(const RegionKey& key) {
         auto it = regions_.find(key);
         std::optional<std::pair<uint64_t, RecordRequest>> out;
-        Spectrum unused;
-        if (!lookup(it->second.first.at, unused)) out.emplace(it->second.order, it->second.first);
+        if (!holds(it->second.first.at)) out.emplace(it->second.order, it->second.first);
         regions_.erase(it);
         return out;
     }

@@ -37,7 +37,8 @@ public:
     }
     // Whether a record of the receiver's instant holds it.
     bool holds(const Receiver& at) const {
-        return gather(at, [](const Record&, double) {}) > 0;
+        const Layer* layer = layerAt(at.time);
+        return layer && layer->holds(at);
     }
     // Calls f(record, weight) for each record of the receiver's instant that holds it (RecordLayer::gather);
     // the weights' sum, 0 where none does.

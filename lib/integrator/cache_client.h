@@ -96,8 +96,8 @@ private:
     // `first` pass and the `known` brightness of the rest of the light there (samples aimed besides them, and
     // the sources' light straight: a record's noise shows on its surface in proportion to all the light the
     // surface gets, and a wall a lamp lights takes fewer passes than a ceiling it does not; in the smoky
-    // corridor of make demo, 3.4 passes in place of 6.9). Deeper records take one: their noise reaches an
-    // answer averaged over the many records a first-bounce record's rays meet.
+    // corridor of bench/volume_cache.py's pictures, albedo .8, 3.4 passes in place of 6.9). Deeper records
+    // take one: their noise reaches an answer averaged over the many records a first-bounce record's rays meet.
     int passesFor(const HemisphereSamples& first, double known) const;
     // The irradiance straight from the sources at a surface record's point, from a few shadow rays (-ad / 16
     // over all sources, at least 2 a source): enough to weigh its share of the light, for passesFor.
