@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "geometry/ray.h"
+#include "medium/density_profile.h"
 #include "medium/voxel_grid.h"
 
 namespace brume {
@@ -38,6 +39,8 @@ public:
     // in t (trilinear interpolation), which two-point Gauss–Legendre integrates exactly. Per cell the ray
     // crosses (about three per voxel length), its eight corner voxels, four of them shared with the cell before.
     double integral(const Ray& ray, double t0, double t1) const;
+    // The density along the ray over [t0, t1], cell by cell (DensityProfile): the same walk as integral().
+    DensityProfile profile(const Ray& ray, double t0, double t1) const;
 
     double maxDensity() const { return voxels_->maxDensity(); }
     // Voxels holding smoke, active tiles counted voxel by voxel.
@@ -48,6 +51,9 @@ public:
     const VoxelGrid& voxels() const { return *voxels_; }
 
 private:
+    template <class F>
+    void forEachCell(const Ray& ray, double t0, double t1, F&& f) const;
+
     std::shared_ptr<const VoxelGrid> voxels_;
     Bounds3 bounds_;  // the voxels' (computed once: it maps the index box's corners to the world)
     glm::dmat4 indexFromWorld_;

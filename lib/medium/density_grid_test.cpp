@@ -66,11 +66,9 @@ TEST(DensityGrid, InterpolationKeepsTheBoxsOpticalDepthAtItsCellExtent) {
     EXPECT_NEAR(opticalDepth(box, {-0.5, 0.45, 0.45}, {1.5, 0.45, 0.45}), 1.0, 1e-6);
 }
 
-// The exact integral along a ray (DensityGrid::integral) against a fine midpoint rule (whose own error, for
-// these cubic pieces at 1/20000 of the way, is far below 1e-6): random voxels in a grid turned, stretched and
-// moved (an affine index-to-world map), rays through it in random directions, along an axis, in a plane of voxel
-// centres, and starting and ending inside it; and an empty stretch.
-TEST(DensityGrid, IntegralAlongARayIsExact) {
+// 7 × 5 × 6 voxels of random densities in [0, 2) (drawn from `seed`), in a grid turned, stretched and moved far
+// from the origin (an affine index-to-world map).
+DensityGrid randomGrid(uint64_t seed) {
     openvdb::initialize();
     auto vdb = openvdb::FloatGrid::create(0.0f);
     openvdb::math::Mat4d m = openvdb::math::Mat4d::identity();
@@ -80,12 +78,21 @@ TEST(DensityGrid, IntegralAlongARayIsExact) {
     m.postTranslate(openvdb::Vec3d(5e5, 5e6, 3));
     vdb->setTransform(openvdb::math::Transform::createLinearTransform(m));
     vdb->setGridClass(openvdb::GRID_FOG_VOLUME);
-    Random random(3, 3);
+    Random random(seed, seed);
     auto acc = vdb->getAccessor();
     for (int i = 0; i < 7; ++i)
         for (int j = 0; j < 5; ++j)
             for (int k = 0; k < 6; ++k) acc.setValue(openvdb::Coord(i, j, k), float(random.uniform() * 2));
-    const DensityGrid grid = densityOf(vdb);
+    return densityOf(vdb);
+}
+
+// The exact integral along a ray (DensityGrid::integral) against a fine midpoint rule (whose own error, for
+// these cubic pieces at 1/20000 of the way, is far below 1e-6): random voxels in a grid turned, stretched and
+// moved (an affine index-to-world map), rays through it in random directions, along an axis, in a plane of voxel
+// centres, and starting and ending inside it; and an empty stretch.
+TEST(DensityGrid, IntegralAlongARayIsExact) {
+    const DensityGrid grid = randomGrid(3);
+    Random random(3, 3);
     const Bounds3 b = grid.bounds();
     const dvec3 centre = 0.5 * (b.lo + b.hi);
     auto along = [&](const dvec3& a, const dvec3& e) {
@@ -105,6 +112,32 @@ TEST(DensityGrid, IntegralAlongARayIsExact) {
     along(at(2.5, -2, 1.5), at(2.5, 8, 1.5));  // along an axis between them
     Ray away{centre + dvec3(10, 0, 0), dvec3(1, 0, 0)};
     EXPECT_EQ(grid.integral(away, 0, 5), 0);
+}
+
+// The profile of a ray (DensityGrid::profile: a cubic per cell) gives the density the grid interpolates at every
+// point of the ray and its exact integral from the stretch's start (against integral()), through the same turned,
+// stretched and moved grid of random voxels; two profiles blended (key frames in time) are the blend of theirs.
+TEST(DensityGrid, ProfileGivesTheDensityAndItsIntegralAlongTheRay) {
+    const DensityGrid grid = randomGrid(4), other = randomGrid(5);
+    const Bounds3 b = grid.bounds();
+    const dvec3 centre = 0.5 * (b.lo + b.hi);
+    Random random(7, 7);
+    for (int n = 0; n < 10; ++n) {
+        dvec3 w(random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5);
+        Ray ray{centre - 2.0 * w, glm::normalize(w)};
+        const double t0 = 0.3 * glm::length(w), t1 = 3.5 * glm::length(w);
+        DensityProfile p = grid.profile(ray, t0, t1), q = other.profile(ray, t0, t1);
+        DensityProfile blend = DensityProfile::sum(p, 0.3, q, 0.7);
+        EXPECT_NEAR(p.total(), grid.integral(ray, t0, t1), 1e-9 * (1 + p.total()));
+        for (int i = 0; i <= 50; ++i) {
+            double t = t0 + (t1 - t0) * i / 50;
+            double d = grid.density(ray.at(t)), e = other.density(ray.at(t));
+            EXPECT_NEAR(p.density(t), d, 1e-5 * (1 + d)) << n << " " << t;
+            EXPECT_NEAR(p.integral(t), grid.integral(ray, t0, t), 1e-9 * (1 + p.total())) << n << " " << t;
+            EXPECT_NEAR(blend.density(t), 0.3 * d + 0.7 * e, 1e-5 * (1 + d + e)) << n << " " << t;
+            EXPECT_NEAR(blend.integral(t), 0.3 * p.integral(t) + 0.7 * q.integral(t), 1e-9 * (1 + blend.total()));
+        }
+    }
 }
 
 TEST(DensityGrid, FogSphereIsDenseInsideAndClearOutside) {

@@ -3,7 +3,9 @@
 // tentative collision, conditioned to fall before the ray's end: density σ̄(t) e^{−τ̄(t)} / (1 − e^{−τ̄(end)}),
 // τ̄ the majorant's optical depth from the start (every draw lands in the medium, so thin media are sampled as
 // well as thick); uniform over the same stretches, its guard where the majorant is loose; and in proportion to
-// 1/r² from a small source beside the ray, to find the light it scatters from the media near it.
+// 1/r² from a small source beside the ray, to find the light it scatters from the media near it; and where
+// the true extinction σ(t) puts the first collision, σ(t) e^{−τ(t)} (DepthCollision), from the smoke's exact
+// density along the ray.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -16,8 +18,8 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/ray.h"
+#include "medium/density_profile.h"
 #include "medium/henyey_greenstein.h"
-
 #include "medium/null_collisions.h"
 
 namespace brume {
@@ -53,6 +55,38 @@ public:
 
 private:
     std::span<const MajorantSegment> segments_;
+    double reach_;
+};
+
+// Distances in proportion to σ(t) e^{−τ(t)} / (1 − e^{−τ(end)}), σ = Σ scale_i × density_i(t) of density
+// profiles along the ray and τ its integral from their start: where the first real collision falls (analog
+// tracking's free flight, conditioned to fall before the end) with τ exact, not a majorant's. What the smoke
+// emits, σ_a B e^{−τ}, then weighs B times (1 − e^{−τ(end)}) a draw, whatever the density's profile; a
+// majorant's exponential over a loose cell instead puts its draws before the smoke starts, where the smoke of a
+// thick flame's ramping edge gives no light, and the light it does give to rare draws of huge weight.
+class DepthCollision {
+public:
+    struct Term {
+        const DensityProfile* profile;  // kept by reference
+        double scale;
+    };
+    explicit DepthCollision(std::vector<Term> terms) : terms_(std::move(terms)) {
+        double depth = 0;
+        for (const Term& term : terms_) depth += term.scale * term.profile->total();
+        reach_ = -std::expm1(-depth);
+    }
+
+    // The chance that a free flight collides before the end.
+    double reach() const { return reach_; }
+    CdfAndDensity cdfAndDensity(double t) const {
+        double depth = 0, sigma = 0;
+        for (const Term& term : terms_)
+            depth += term.scale * term.profile->integral(t), sigma += term.scale * term.profile->density(t);
+        return {-std::expm1(-depth) / reach_, sigma * std::exp(-depth) / reach_};
+    }
+
+private:
+    std::vector<Term> terms_;
     double reach_;
 };
 
@@ -153,7 +187,8 @@ private:
 // its own and their noise, and the count each strategy got would vary with the draws.
 class DistanceMixture {
 public:
-    using Sampler = std::variant<const ForcedCollision*, const UniformCollision*, const EquiangularCollision*>;
+    using Sampler = std::variant<const ForcedCollision*, const UniformCollision*, const EquiangularCollision*,
+                                 const DepthCollision*>;
     // Every component's draws lie in [lo, hi] (hi may be infinite).
     DistanceMixture(double lo, double hi) : lo_(lo), hi_(hi) {}
 

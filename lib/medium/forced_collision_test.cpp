@@ -87,6 +87,22 @@ TEST(UniformCollision, DrawsAreUniformOverTheSegmentsLength) {
     expectDrawsFollowItsDensity(even);
 }
 
+// Two smokes' densities over the segments' stretches (cubic pieces as trilinear cells give, an even stretch, a
+// ramp after the gap), weighed by their extinctions per unit density: draws where the first real collision falls.
+TEST(DepthCollision, DrawsFollowTheTrueExtinctionsFirstCollisionWithinTheSegments) {
+    DensityProfile a, b;
+    a.append(0.5, 1.2, {0.0, 0.4, 1.5, -0.6});
+    a.append(1.2, 2.0, {0.9, -0.3, 0.0, 0.2});
+    a.append(2.0, 3.0, 2.5);
+    b.append(4.5, 9.0, {0.0, 0.3, 0, 0});
+    b.append(0.5, 0.5, 7.0);  // empty: dropped
+    EXPECT_EQ(b.pieces().size(), 1u);
+    const double scaleA = 0.8, scaleB = 1.3;
+    DepthCollision depth({{&a, scaleA}, {&b, scaleB}});
+    EXPECT_NEAR(depth.reach(), -std::expm1(-(scaleA * a.total() + scaleB * b.total())), 1e-12);
+    expectDrawsFollowItsDensity(depth);
+}
+
 // Toward a point beside the ray, one beyond its end, and one nearly on it (h held at minDistance); plain, and
 // shaped by forward and backward Henyey–Greenstein phase functions.
 TEST(EquiangularCollision, DrawsFallAsTheInverseSquareFromThePointTimesThePhase) {

@@ -36,6 +36,13 @@ double GridSequence::integral(const Ray& ray, double t0, double t1, double time)
     return (1 - b.w) * frames_[b.before].grid.integral(ray, t0, t1) + b.w * frames_[b.later].grid.integral(ray, t0, t1);
 }
 
+DensityProfile GridSequence::profile(const Ray& ray, double t0, double t1, double time) const {
+    const Blend b = blendAt(time);
+    DensityProfile before = frames_[b.before].grid.profile(ray, t0, t1);
+    if (b.later == b.before) return before;
+    return DensityProfile::sum(before, 1 - b.w, frames_[b.later].grid.profile(ray, t0, t1), b.w);
+}
+
 MajorantGrid GridSequence::boundsAt(double time, int voxelsPerCell) const {
     const Blend b = blendAt(time);
     if (b.later == b.before) return MajorantGrid(frames_[b.before].grid, voxelsPerCell);

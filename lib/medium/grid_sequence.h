@@ -23,6 +23,8 @@ public:
     double density(const dvec3& p, double time) const;
     // ∫ density(ray.at(t), time) dt over [t0, t1], exactly (DensityGrid::integral).
     double integral(const Ray& ray, double t0, double t1, double time) const;
+    // The density along the ray over [t0, t1] at `time`, cell by cell (DensityGrid::profile, blended).
+    DensityProfile profile(const Ray& ray, double t0, double t1, double time) const;
     // Where any frame's density can be non-zero.
     Bounds3 bounds() const;
     // Bounds the density at every time in [t0, t1]: the majorants of the key frames from the last at or

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "medium/forced_collision.h"
+#include "sampling/piecewise_constant.h"
 
 namespace brume {
 
@@ -48,6 +50,31 @@ double bandOf(const Spectrum& s, ParticipatingMedia::Band band) {
     return least;
 }
 
+// Σ weighed(t_k)/(guide's density × points) over `points` distances drawn from `mixture` through a guide: what a
+// draw at the middle of each of 2·points bins of the mixture's cumulative distribution weighs (weighed(t), the
+// integrand over the mixture's density), which half of the draws then follow (PiecewiseConstant), stratified
+// over the guide's distribution. Where the integrand is even in the mixture's terms (even smoke of one
+// temperature) the guide is uniform and every draw weighs the same.
+template <class Weighed>
+Spectrum guidedSum(const DistanceMixture& mixture, int points, Random& random, const Weighed& weighed) {
+    std::vector<double> guess(size_t(2 * points));
+    double t = -std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < guess.size(); ++j) {
+        t = mixture.sample((double(j) + 0.5) / double(guess.size()), t);  // in order: each searched for from the last
+        guess[j] = brightness(weighed(t));
+    }
+    PiecewiseConstant guide(guess, 0.5);
+    Spectrum sum(0.f);
+    const double u = random.uniform();
+    t = -std::numeric_limits<double>::infinity();
+    for (int k = 0; k < points; ++k) {
+        double x = guide.sample((k + u) / points);
+        t = mixture.sample(x, t);
+        sum += weighed(t) * float(1 / (guide.density(x) * points));
+    }
+    return sum;
+}
+
 }  // namespace
 
 ParticipatingMedia::ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(std::move(smoke)) {
@@ -75,31 +102,35 @@ double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3&
 
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                           Random& random, Spectrum& transmittance, int points) const {
-    auto stretch = [&](double t0, double t1) { return ParticipatingMedia::transmittance(ray, t0, t1, h); };
-    std::vector<MajorantSegment> segments;
-    majorants(ray, start, end, &h, segments);
-    ForcedCollision forced(segments);
-    Spectrum sum(0.f);
-    if (segments.empty() || !(forced.reach() > 0)) {
-        transmittance = stretch(start, end);
-        return sum;
+    std::vector<DensityProfile> along(smoke_.size());  // each smoke's density on the stretch
+    std::vector<DepthCollision::Term> dense, clear;     // the flames' extinction in those bands
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t v = 0; v < smoke_.size(); ++v) {
+        if (!crosses(smoke_[v].bounds(), ray, start, end)) continue;
+        along[v] = smoke_[v].profile(ray, start, end);
+        if (!smoke_[v].emits() || along[v].empty()) continue;
+        const Spectrum& k = smoke_[v].extinctionPerDensity();
+        dense.push_back({&along[v], bandOf(k, Band::Largest)});
+        clear.push_back({&along[v], bandOf(k, Band::Smallest)});
+        lo = std::min(lo, along[v].pieces().front().a), hi = std::max(hi, along[v].pieces().back().b);
     }
-    UniformCollision even(segments);
-    double uniform = std::isfinite(even.length()) ? 0.5 * looseLength(segments) / even.length() : 0;
-    DistanceMixture mixture(segments.front().t0, segments.back().t1);
-    mixture.add(uniform, &even);
-    mixture.add(1 - uniform, &forced);
-    Spectrum t(1.f);
-    double at = start, u = random.uniform();
-    for (int k = 0; k < points && !t.isBlack(); ++k) {
-        double next = mixture.sample((k + u) / points, at);  // in order: each searched for from the last
-        double density = mixture.density(next);
-        t *= stretch(at, next);
-        at = next;
-        if (density > 0) sum.addProduct(t, emission(ray.at(next)), float(1 / (density * points)));
-    }
-    transmittance = t.isBlack() ? t : t * stretch(at, end);
-    return sum;
+    auto transmittanceTo = [&](double t) {  // from `start`, per band
+        Spectrum out = h.transmittance(t - start);
+        for (size_t v = 0; v < smoke_.size(); ++v)
+            if (!along[v].empty()) out *= smoke_[v].transmittance(along[v].integral(t));
+        return out;
+    };
+    transmittance = transmittanceTo(end);
+    DepthCollision near(std::move(dense)), far(std::move(clear));
+    if (!(near.reach() > 0)) return Spectrum(0.f);
+    bool mixed = far.reach() > 0 && far.reach() != near.reach();
+    DistanceMixture mixture(lo, hi);
+    mixture.add(mixed ? 0.5 : 1.0, &near);
+    if (mixed) mixture.add(0.5, &far);
+    return guidedSum(mixture, points, random, [&](double t) {
+        double density = mixture.density(t);
+        return density > 0 ? transmittanceTo(t) * emission(ray.at(t)) * float(1 / density) : Spectrum(0.f);
+    });
 }
 
 Spectrum ParticipatingMedia::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h) const {

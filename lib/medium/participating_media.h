@@ -33,11 +33,13 @@ public:
     double flameDirectionDensity(const dvec3& from, const dvec3& dir) const;
     const Bounds3& flameBox() const { return flameBox_; }
     // The light the flames emit toward ray.org along [start, end], ∫ T σ_a B dt with T from `start` through
-    // `h` and the smoke (unbiased), and in `transmittance` T over the whole stretch (exact). `points` distances
-    // stratified over the majorant's forced collisions (ForcedCollision: exact for even smoke, where T is the
-    // majorant's own exponential, however thick), with a uniform guard where the smoke's cells bound it
-    // loosely, T carried from point to point: a thick flame's light comes from its
-    // near side, a thin one's from all along.
+    // `h` and the smoke, and in `transmittance` T over the whole stretch (both exact in T: the smokes' densities
+    // along the ray, DensityProfile). `points` distances stratified over where the flames' first collision
+    // falls, in their densest and their clearest band (DepthCollision, a mixture of the two), each weighing B
+    // times T from the flames to the point over theirs: at most B (1 − e^{−τ}), so even flames are right per
+    // ray however thick (their near side) or thin (all along). Where the temperature varies, half the draws
+    // follow what draws at 2·points places would weigh (PiecewiseConstant), so that the hot core a ray
+    // crosses, or the hot side of a ramping edge, gets the draws its light asks for.
     Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
                           Spectrum& transmittance, int points = 8) const;
     // Whether anything on the ray can scatter light (or only absorbs it).

@@ -8,7 +8,6 @@
 #include <glm/matrix.hpp>
 
 #include "scene/raypath.h"
-#include "spectrum/blackbody.h"
 #include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
@@ -106,7 +105,7 @@ SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsP
       scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)),
       scaleDown_(smoke.extinctionPerDensity.maxValue() * (1 - 0x1p-23)) {
     if (emits()) {
-        for (double kelvin = 0; kelvin <= kHottest; kelvin += kBlackbodyStep) blackbodies_.push_back(blackbody(kelvin));
+        blackbodies_ = std::make_shared<const BlackbodyTable>();
         flames_ = flameCells(*this, description_);
     }
 }
@@ -114,34 +113,50 @@ SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsP
 double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
 
 Spectrum SmokeVolume::emission(const dvec3& p) const {
-    double kelvin = std::clamp(description_.temperature->density(p, time_), 0.0, kHottest) / kBlackbodyStep;
-    std::size_t i = std::min(std::size_t(kelvin), blackbodies_.size() - 2);
-    float w = float(kelvin - double(i));
-    Spectrum b = blackbodies_[i] * (1 - w) + blackbodies_[i + 1] * w;
-    return b * extinction(p) * (Spectrum(1.f) - description_.albedo);
+    return blackbodies_->at(description_.temperature->density(p, time_)) * extinction(p) *
+           (Spectrum(1.f) - description_.albedo);
+}
+
+// Consecutive cells of uneven smoke make one run: one walk through the voxels.
+template <class Even, class Uneven>
+void SmokeVolume::forEachRun(const Ray& ray, double tmin, double tmax, Even&& even, Uneven&& uneven) const {
+    double unevenFrom = tmin, unevenTo = tmin;
+    auto flush = [&] {
+        if (unevenTo > unevenFrom) uneven(unevenFrom, unevenTo);
+    };
+    majorant_.forEachBound(ray, tmin, tmax, [&](double t0, double t1, double majorant, double minorant) {
+        if (majorant > minorant) {
+            if (t0 != unevenTo) flush(), unevenFrom = t0;
+            unevenTo = t1;
+            return true;
+        }
+        even(t0, t1, majorant);  // even smoke, or none
+        return true;
+    });
+    flush();
 }
 
 Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax) const {
     double depth = 0;  // ∫ density dt
-    // Consecutive cells of uneven smoke are integrated in one walk through the voxels.
-    double unevenFrom = tmin, unevenTo = tmin;
-    auto integrateUneven = [&] {
-        if (unevenTo > unevenFrom) depth += description_.frames->integral(ray, unevenFrom, unevenTo, time_);
-    };
-    majorant_.forEachBound(ray, tmin, tmax, [&](double t0, double t1, double majorant, double minorant) {
-        if (majorant > minorant) {
-            if (t0 != unevenTo) integrateUneven(), unevenFrom = t0;
-            unevenTo = t1;
-            return true;
-        }
-        depth += majorant * (t1 - t0);  // even smoke, or none
-        return true;
-    });
-    integrateUneven();
+    forEachRun(
+        ray, tmin, tmax, [&](double t0, double t1, double density) { depth += density * (t1 - t0); },
+        [&](double t0, double t1) { depth += description_.frames->integral(ray, t0, t1, time_); });
+    return transmittance(depth);
+}
+
+Spectrum SmokeVolume::transmittance(double integral) const {
     const Spectrum& k = description_.extinctionPerDensity;
     Spectrum t(1.f, k.size());
-    for (int i = 0; i < t.size(); ++i) t[i] = float(std::exp(-double(k[i]) * depth));
+    for (int i = 0; i < t.size(); ++i) t[i] = float(std::exp(-double(k[i]) * integral));
     return t;
+}
+
+DensityProfile SmokeVolume::profile(const Ray& ray, double tmin, double tmax) const {
+    DensityProfile out;
+    forEachRun(
+        ray, tmin, tmax, [&](double t0, double t1, double density) { out.append(t0, t1, density); },
+        [&](double t0, double t1) { out.append(description_.frames->profile(ray, t0, t1, time_)); });
+    return out;
 }
 
 }  // namespace brume

@@ -8,6 +8,7 @@
 #include "medium/grid_sequence.h"
 #include "medium/majorant_grid.h"
 #include "scene/scene.h"
+#include "spectrum/blackbody.h"
 #include "spectrum/spectrum.h"
 
 namespace brume {
@@ -65,16 +66,24 @@ public:
     // of √(e^{D/m} − 1) for a residual optical depth D tracked with m·D collisions: in the corridor of make
     // demo at t = 120 s view rays' errors were mostly that noise.
     Spectrum transmittance(const Ray& ray, double tmin, double tmax) const;
+    // e^{−K ∫ρ} per band for `integral` = ∫ρ along a line.
+    Spectrum transmittance(double integral) const;
+    // The density along the ray over [tmin, tmax] as the same walk finds it: constant in even cells, the
+    // voxels' cubics in uneven ones (DensityProfile), nothing where there is no smoke.
+    DensityProfile profile(const Ray& ray, double tmin, double tmax) const;
 
 private:
+    // Calls even(t0, t1, density) over the stretches of even smoke (or none) and uneven(t0, t1) over runs of
+    // cells of uneven smoke, in order along [tmin, tmax].
+    template <class Even, class Uneven>
+    void forEachRun(const Ray& ray, double tmin, double tmax, Even&& even, Uneven&& uneven) const;
+
     SmokeDescription description_;
     double time_;
     MajorantGrid majorant_;
     Bounds3 bounds_;
     double scale_, scaleDown_;  // the largest band of extinctionPerDensity, rounded up and down
-    // Black bodies every kBlackbodyStep kelvin from 0 (interpolated between): Planck per sample costs too much.
-    static constexpr double kBlackbodyStep = 25, kHottest = 6000;
-    std::vector<Spectrum> blackbodies_;
+    std::shared_ptr<const BlackbodyTable> blackbodies_;  // flames only
     EmissionCells flames_;
 };
 

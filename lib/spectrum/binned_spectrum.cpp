@@ -11,7 +11,7 @@ namespace brume {
 namespace {
 
 // The bins' colour: each bin's value times each curve's share of its area in the bin.
-Spectrum colourOfBins(std::span<const double> values, double from, double step) {
+Spectrum colourOfBins(std::span<const double> values, double from, double step, Gamut gamut) {
     const TabulatedSpectrum* curves[3] = {&cieX(), &cieY(), &cieZ()};
     Color3 xyz{0, 0, 0};
     for (int c = 0; c < 3; ++c) {
@@ -22,17 +22,17 @@ Spectrum colourOfBins(std::span<const double> values, double from, double step) 
             xyz[size_t(c)] += values[j] * f.integral(std::min(a, b), std::max(a, b)) / area;
         }
     }
-    Color3 rgb = xyzToClippedRgb(xyz);
+    Color3 rgb = gamut == Gamut::Clipped ? xyzToClippedRgb(xyz) : xyzToRgbWithoutGrey(xyz);
     return Spectrum(float(rgb[0]), float(rgb[1]), float(rgb[2]));
 }
 
 }  // namespace
 
-Spectrum spectrumFromBins(std::span<const double> values, double from, double to) {
+Spectrum spectrumFromBins(std::span<const double> values, double from, double to, Gamut gamut) {
     double step = (to - from) / double(values.size());
     const SpectralSampling& s = spectralSampling();
     if (values.empty() || !(step != 0)) return Spectrum(0.f);
-    if (s.isRgb()) return colourOfBins(values, from, step);
+    if (s.isRgb()) return colourOfBins(values, from, step, gamut);
     Spectrum out(0.f, s.channels);
     for (int i = 0; i < s.channels; ++i) {
         auto band = s.band(i);  // longer, shorter

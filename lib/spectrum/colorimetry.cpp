@@ -1,5 +1,6 @@
 #include "spectrum/colorimetry.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -152,7 +153,17 @@ Color3 xyzToClippedRgb(const Color3& xyz, const Primaries& p) {
     double keep = 1;  // of the colour's difference from its grey, just enough to bring negatives to 0
     for (double c : rgb)
         if (c < 0) keep = std::min(keep, y / (y - c));
-    for (double& c : rgb) c = keep * c + (1 - keep) * y;
+    for (double& c : rgb) c = std::max(0.0, keep * c + (1 - keep) * y);  // (the negatives' 0, rounded, may be −1e−18)
+    return rgb;
+}
+
+Color3 xyzToRgbWithoutGrey(const Color3& xyz) {
+    static const Matrix3 xyzToRadiance = xyzToRgb(kRadiancePrimaries), radianceToXyz = rgbToXyz(kRadiancePrimaries);
+    Color3 rgb = xyzToRadiance * xyz;
+    double y = 0;
+    for (int c = 0; c < 3; ++c) y += radianceToXyz[1][size_t(c)] * (rgb[size_t(c)] = std::max(0.0, rgb[size_t(c)]));
+    if (!(y > 0) || !(xyz[1] > 0)) return {0, 0, 0};
+    for (double& c : rgb) c *= xyz[1] / y;
     return rgb;
 }
 

@@ -64,6 +64,10 @@ Color3 toXyz(const Spectrum& s);
 Color3 toRgb(const Spectrum& s, const Primaries& p = kRadiancePrimaries);
 // The same from XYZ.
 Color3 xyzToClippedRgb(const Color3& xyz, const Primaries& p = kRadiancePrimaries);
+// Radiance's RGB with negatives set to 0 and the rest scaled to keep Y: for light far outside the gamut whose
+// grey would be light it does not have (a black body below 2000 K has no blue, below 900 K no green: the
+// desaturation above gives a 700 K flame 8 % of its red in blue).
+Color3 xyzToRgbWithoutGrey(const Color3& xyz);
 double photopic(const Spectrum& s);   // Y (3 channels: Radiance's bright())
 double scotopic(const Spectrum& s);   // V'(λ)
 double melanopic(const Spectrum& s);  // s_mel(λ) of CIE S 026, normalised to unit area (Radiance's -pM)
