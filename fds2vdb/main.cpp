@@ -22,6 +22,7 @@ struct Options {
     std::vector<double> instants;  // none: every frame
     std::string prefix;            // of the files written; the case's CHID and the quantity by default
     bool flames = false;           // TEMPERATURE too, as the grid "temperature" (K)
+    bool grey = false;             // soot's K in every band, not its spectrum
 };
 
 const std::string kUsage = "usage: fds2vdb [options] case.smv > smoke.rad\n";
@@ -43,6 +44,7 @@ OptionTable makeTable(Options& o) {
           [&o](const auto& a) { o.instants = instantsFrom(a[0]); });
     t.add("-o", 1, "prefix of the files written (default CHID_quantity)", [&o](const auto& a) { o.prefix = a[0]; });
     t.addBool("-f", o.flames, "also TEMPERATURE, in kelvin, as the grid 'temperature' (flames)");
+    t.addBool("-g", o.grey, "soot's extinction grey, its 633 nm value in every band (default: soot's spectrum)");
     return t;
 }
 
@@ -121,11 +123,14 @@ int run(int argc, char** argv) {
     std::vector<std::string> command(argv, argv + argc);
     command[0] = programName();
     std::printf("# %s\n# '%s' (%s) of %s from its %s\n"
-                "# extinction per unit, albedo and g: soot scatters about a fifth of what it takes, forward\n",
+                "# extinction per unit (at 633 nm), albedo and g: soot scatters about a fifth of what it takes, forward\n",
                 commandLine(command).c_str(), o.quantity.c_str(),
                 quantity.units().c_str(), smvPath.c_str(), quantity.source().c_str());
-    std::printf("void smoke %s\n%zu%s", prefix.substr(prefix.find_last_of('/') + 1).c_str(),
-                (files.size() == 1 ? 1 : 2 * files.size()) + (o.flames ? 1 : 0), o.flames ? " temperature=temperature" : "");
+    // Soot (its mass or its extinction): FDS's K is for 633 nm, and soot's grows toward the blue.
+    const bool soot = !o.grey && (quantity.units() == "kg/m3" || quantity.units() == "1/m");
+    std::printf("void smoke %s\n%zu%s%s", prefix.substr(prefix.find_last_of('/') + 1).c_str(),
+                (files.size() == 1 ? 1 : 2 * files.size()) + (o.flames ? 1 : 0) + (soot ? 1 : 0),
+                o.flames ? " temperature=temperature" : "", soot ? " extinction=soot" : "");
     if (files.size() == 1) std::printf(" %s", files[0].c_str());
     else
         for (size_t i = 0; i < files.size(); ++i) std::printf(" %.9g %s", instants[i], files[i].c_str());

@@ -32,7 +32,7 @@ TEST(Fds2vdb, WritesTheImportedValuesAndASmokeObjectThatRenders) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     std::string rad = brume_test::slurp(dir / "smoke.rad");
-    EXPECT_NE(rad.find("void smoke two_mesh_smoke_soot_density\n5 temperature=temperature 10 "
+    EXPECT_NE(rad.find("void smoke two_mesh_smoke_soot_density\n6 temperature=temperature extinction=soot 10 "
                        "two_mesh_smoke_soot_density_0010.000.vdb 11 two_mesh_smoke_soot_density_0011.000.vdb\n"),
               std::string::npos)
         << rad;
@@ -61,6 +61,12 @@ TEST(Fds2vdb, WritesTheImportedValuesAndASmokeObjectThatRenders) {
     double red = std::stod(trace.out);
     EXPECT_LT(red, 0.9) << trace.out;  // the ceiling's smoke at 10-11 s, 2 m of it
     EXPECT_GT(red, 0.0) << trace.out;
+    // -g: soot's 633 nm K in every band, as before soot's spectrum was written.
+    Output grey = brume_test::runBrume("fds2vdb -g -t 10 '" + smv + "'", dir);
+    ASSERT_EQ(grey.status, 0) << grey.err;
+    EXPECT_NE(grey.out.find("void smoke two_mesh_smoke_soot_density\n1 two_mesh_smoke_soot_density_0010.000.vdb\n"),
+              std::string::npos)
+        << grey.out;
 }
 
 TEST(Fds2vdb, GivesTheSharedDataHandConvertedGrids) {

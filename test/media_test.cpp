@@ -322,6 +322,27 @@ TEST(Smoke, SpectrumModifierMakesExtinctionSpectral) {
     for (int b = 0; b < 6; ++b) EXPECT_NEAR(v[b], std::exp(-0.7 * (b < 3 ? 1 : 2)), 1e-5) << "band " << b;
 }
 
+// Soot (extinction=soot) dims each band by its own K, K(633 nm)·(λ/633)^−1.39: through 7 m of it the panel's
+// white reaches the eye bluer-dimmed, e^{−7 K s_b} in each of 41 bands (1e-5: even smoke, exact); and its
+// luminance is the same in RGB (1 %: RGB takes the colour of soot's K, a second-order difference at τ ≈ 1).
+TEST(Smoke, SootDimsEachBandByItsOwnExtinction) {
+    RayPathDir dir;
+    writeBox(dir, "even.vdb", 1.0f);
+    const std::string scene = kPanel + "void smoke s 2 extinction=soot even.vdb 0 3 .1 .1 .1\n";
+    double luminance[2];
+    for (int bands : {41, 3}) {
+        SpectralSamplingScope sampling(bands);
+        Spectrum soot = sootExtinction();
+        TestScene t(scene);
+        Spectrum v = test::trace(Integrator(t.render, settings("")), kView.org, kView.dir, 0).value;
+        if (bands == 41)
+            for (int b = 0; b < bands; ++b) EXPECT_NEAR(v[b], std::exp(-0.7 * soot[b]), 1e-5) << "band " << b;
+        luminance[bands == 3] = photopic(v);
+    }
+    EXPECT_LT(luminance[0], std::exp(-0.7));  // darker than at 633 nm: the eye's K is larger
+    EXPECT_NEAR(luminance[1], luminance[0], 0.01 * luminance[0]);
+}
+
 // Flames: smoke of albedo 0 at 3000 K emits what it absorbs as a black body, so a ray through d of it sees
 // B·(1 − e^{−σd}): nearly B when thick, σ d B when thin. Its luminance, 179 × photopic value, against
 // 683 lm/W · ∫ B ȳ dλ from Planck's law and the CIE table (1 nm): 0.5% in 41 bands, 1% in RGB (the colour

@@ -126,6 +126,33 @@ TEST_F(Vismap, AbsorbingSmokeDimsSignAndBackgroundAlike) {
     EXPECT_EQ(rows[1].at("jin_verdict"), "not-visible");
 }
 
+// Soot (extinction=soot, K given at 633 nm) dims the sign by its spectrum, more in the blue: Jin's law and the
+// optical depth quote K at 633 nm by default, FDS's and FDSVisMap's, the same in RGB and in 41 bands (printed
+// digits), and with -vk photopic the eye's mean K, 1.20 times it (1 % in both); the CSV says which.
+TEST_F(Vismap, JinsLawQuotesSootsKAt633nmInRgbAndSpectralRuns) {
+    waypoints("a 5 0 1.75\n");
+    {
+        namespace mt = brume::medium::testing;
+        mt::writeGrid(dir_ / "box.vdb", mt::boxGrid({-4, -12, -2}, {24, 12, 12}, 1.0f, 0.5));
+        std::ofstream(dir_ / "soot.rad") << "void smoke box 2 extinction=soot box.vdb 0 3 .3 .3 .3\n";
+    }
+    for (const std::string& bands : {std::string(""), std::string("-cs 41 ")}) {
+        SCOPED_TRACE(bands);
+        for (const std::string& quoted : {std::string(""), std::string("-vk 633 "), std::string("-vk photopic ")}) {
+            Output r = run("vismap -S signs.txt -wp route.txt -ab 0 " + bands + quoted + "sign.rad soot.rad");
+            ASSERT_EQ(r.status, 0) << r.err;
+            std::vector<Row> rows = csv(r.out);
+            ASSERT_EQ(rows.size(), 1u);
+            bool photopic = quoted.find("photopic") != std::string::npos;
+            EXPECT_EQ(rows[0].at("extinction_quoted"), photopic ? "photopic" : "633nm");
+            double k = photopic ? 0.3 * 1.20 : 0.3;
+            EXPECT_NEAR(number(rows[0], "mean_extinction_1_m"), k, (photopic ? 0.01 : 1e-3) * k) << quoted;
+            EXPECT_NEAR(number(rows[0], "optical_depth"), 5 * k, (photopic ? 0.01 : 1e-3) * 5 * k) << quoted;
+        }
+    }
+    EXPECT_NE(run("vismap -S signs.txt -wp route.txt -vk 550 sign.rad soot.rad").status, 0);
+}
+
 // Smoke that scatters, lit from the side by a small lamp, veils the sign and its background alike with the light
 // it scatters toward the eye: their contrast falls. At -ab 0 that is single scattering, here against a numerical
 // integral along each sight line (Simpson, 2000 steps: far below the test's tolerance) of

@@ -39,6 +39,7 @@ struct Options {
     int rays = 32;
     int passes = 4;  // passes of rays at most, the later ones for sight lines whose verdict is uncertain
     VisibilityCriteria criteria{{}, 10, 0.5};
+    QuotedExtinction quoted = QuotedExtinction::At633nm;  // the K of Jin's law and of the optical depth column
     double reportInterval = 0;
 };
 
@@ -71,6 +72,12 @@ OptionTable makeTable(Options& o) {
     addRealOption(t, "-vl", o.criteria.minimumLevel, "the visibility level a visible sign reaches");
     addRealOption(t, "-va", o.criteria.observer.age, "the observer's age (years, 23-75)");
     addRealOption(t, "-vt", o.criteria.observer.seconds, "the observation time (s)");
+    t.add("-vk", 1, "the K of Jin's law: 633 (soot's at 633 nm, as FDS's VISIBILITY; default) or photopic",
+          [&o](const auto& a) {
+              if (a[0] == "633") o.quoted = QuotedExtinction::At633nm;
+              else if (a[0] == "photopic") o.quoted = QuotedExtinction::Photopic;
+              else throw UsageError("-vk: expected 633 or photopic, not '" + a[0] + "'", kUsage);
+          });
     addRealOption(t, "-t", o.reportInterval, "seconds between progress reports (0: none, or a live line on a terminal)");
     addRenderOptions(t, o.render, o.irradianceAtHit);
     t.remove("-T");
@@ -144,15 +151,20 @@ double standardError(double sum, double squares, int n) {
 void writeCsvHead() {
     std::printf("instant_s,observer,x,y,z,sign,kind,distance_m,sign_cd_m2,background_cd_m2,contrast,size_arcmin,"
                 "threshold_cd_m2,visibility_level,verdict,seen_share,optical_depth,mean_extinction_1_m,jin_distance_m,"
-                "jin_verdict,visibility_level_se\n");
+                "jin_verdict,visibility_level_se,extinction_quoted\n");
 }
 
-void writeCsvRow(double t, const Observer& o, const Sign& s, const SightMeasure& m, const SightJudgement& j) {
-    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s,%.3g\n", t, o.name.c_str(),
+// The K the optical depth and Jin's columns quote (-vk).
+const char* quotedName(QuotedExtinction quoted) { return quoted == QuotedExtinction::At633nm ? "633nm" : "photopic"; }
+
+void writeCsvRow(double t, const Observer& o, const Sign& s, const SightMeasure& m, const SightJudgement& j,
+                 QuotedExtinction quoted) {
+    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s,%.3g,%s\n",
+                t, o.name.c_str(),
                 o.eye.x, o.eye.y, o.eye.z, s.name.c_str(), s.kind == SignKind::Emitting ? "emitting" : "reflecting",
                 m.distance, m.signLuminance, m.backgroundLuminance, j.contrast, j.angularSize, j.threshold,
                 j.visibilityLevel, verdictName(j.verdict), m.seenShare, m.opticalDepth, j.meanExtinction,
-                j.jinDistance, j.jinVisible ? "visible" : "not-visible", j.levelError);
+                j.jinDistance, j.jinVisible ? "visible" : "not-visible", j.levelError, quotedName(quoted));
 }
 
 // A map over the grid's cells, one value per observer (the same in R, G and B: a data picture for falsecolor).
@@ -206,11 +218,7 @@ void addTo(std::vector<Tally>& tallies, const std::vector<size_t>& traced, const
     }
 }
 
-// ∫K along the line from the eye to the sign's centre at `time` (exact: the same on every pass of rays).
-double opticalDepth(const Observer& observer, const Sign& sign, const Integrator& integrator, double time) {
-    const double through = photopic(integrator.transmittanceBetween(observer.eye, sign.centre, time));
-    return through >= 1 ? 0 : through > 0 ? -std::log(through) : std::numeric_limits<double>::infinity();
-}
+
 
 SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, double opticalDepth) {
     SightMeasure m;
@@ -293,7 +301,7 @@ int run(int argc, char** argv) {
                 if (!inPass[pair]) continue;
                 const Sign& sign = signs[pair % signs.size()].sign;
                 const Observer& observer = observers[pair / signs.size()];
-                if (pass == 0) depths[pair] = opticalDepth(observer, sign, integrator, t);
+                if (pass == 0) depths[pair] = integrator.quotedDepthBetween(observer.eye, sign.centre, t, o.quoted);
                 measures[pair] = measure(observer, sign, tallies[pair], depths[pair]);
                 judgements[pair] = judge(measures[pair], sign.jinConstant, o.criteria);
                 inPass[pair] = pass + 1 < o.passes && uncertain(judgements[pair], o.criteria);
@@ -303,7 +311,7 @@ int run(int argc, char** argv) {
         std::vector<double> levels(pairs);
         for (size_t pair = 0; pair < pairs; ++pair) {
             const SightJudgement& j = judgements[pair];
-            writeCsvRow(t, observers[pair / signs.size()], signs[pair % signs.size()].sign, measures[pair], j);
+            writeCsvRow(t, observers[pair / signs.size()], signs[pair % signs.size()].sign, measures[pair], j, o.quoted);
             levels[pair] = j.verdict == Verdict::Hidden || j.verdict == Verdict::Behind ? 0 : j.visibilityLevel;
             endurance.add(pair, t, j);
         }

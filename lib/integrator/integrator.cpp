@@ -317,10 +317,11 @@ Spectrum Integrator::sampledRadiance(const dvec3& from, const SurfaceId& surface
     return li + emission;
 }
 
-Spectrum Integrator::transmittanceBetween(const dvec3& from, const dvec3& to, double time) const {
+double Integrator::quotedDepthBetween(const dvec3& from, const dvec3& to, double time, QuotedExtinction quoted) const {
     double distance = glm::length(to - from);
-    if (!media_.present() || !(distance > 0)) return Spectrum(1.f);
-    return media_.clearTransmittance(Ray(from, (to - from) / distance), distance, PathState{}, media_.smokeAt(time));
+    if (!media_.present() || !(distance > 0)) return 0;
+    Ray line(from, (to - from) / distance);
+    return media_.smokeAt(time).quotedDepth(line, 0, distance, media_.homogeneousAlong(line, nullptr, PathState{}), quoted);
 }
 
 }  // namespace brume

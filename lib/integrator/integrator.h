@@ -60,10 +60,10 @@ public:
     // Irradiance at the first opaque surface the ray meets; light sources give their radiance (rtrace -i).
     RayRecord irradianceAtHit(const RayQuery& q, WorkItem& item, RayTree* tree = nullptr) const;
 
-    // exp(−∫σ_t) of every medium on the straight line from `from` to `to` (the global one, the mists around
-    // `from`, the smoke at `time`, a prepared instant), surfaces ignored and exact: the optical depth of a
-    // line of sight, for Jin's law.
-    Spectrum transmittanceBetween(const dvec3& from, const dvec3& to, double time) const;
+    // ∫K of every medium on the straight line from `from` to `to` (the global one, the mists around `from`, the
+    // smoke at `time`, a prepared instant), surfaces ignored and exact, K each medium's as a study quotes one
+    // number (QuotedExtinction): the optical depth of a line of sight, for Jin's law.
+    double quotedDepthBetween(const dvec3& from, const dvec3& to, double time, QuotedExtinction quoted) const;
 
     // The cache's side of the record passes: what a missed record is worth, and a record.
     int missesToPay(const RecordRequest& request) const { return cache_.missesToPay(request); }

@@ -6,6 +6,7 @@
 
 #include "medium/forced_collision.h"
 #include "sampling/piecewise_constant.h"
+#include "spectrum/colorimetry.h"
 
 namespace brume {
 
@@ -136,6 +137,15 @@ Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double e
 Spectrum ParticipatingMedia::transmittance(const Ray& ray, double start, double end, const HomogeneousMedium& h) const {
     Spectrum t = h.transmittance(end - start);
     return t.isBlack() || !hasSmoke() ? t : t * smokeTransmittance(ray, start, end);
+}
+
+double ParticipatingMedia::quotedDepth(const Ray& ray, double start, double end, const HomogeneousMedium& h,
+                                       QuotedExtinction quoted) const {
+    double k = photopic(h.extinction), depth = k > 0 ? k * (end - start) : 0;
+    for (const SmokeVolume& v : smoke_)
+        if (crosses(v.bounds(), ray, start, end))
+            depth += v.quotedExtinctionPerDensity(quoted) * v.densityIntegral(ray, start, end);
+    return depth;
 }
 
 bool ParticipatingMedia::smokeAlong(const Ray& ray, double start, double end) const {

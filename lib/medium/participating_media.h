@@ -56,6 +56,9 @@ public:
     enum class Band { Largest, Smallest };
     void majorants(const Ray& ray, double start, double end, const HomogeneousMedium* h,
                    std::vector<MajorantSegment>& out, Band band = Band::Largest) const;
+    // ∫K dt between start and end through `h` and the smoke, K each one's as a study quotes one number
+    // (QuotedExtinction; the homogeneous medium's photopic mean): the optical depth of a line of sight.
+    double quotedDepth(const Ray& ray, double start, double end, const HomogeneousMedium& h, QuotedExtinction quoted) const;
     // exp(−∫σ_t) of the smoke between start and end (SmokeVolume::transmittance: exact, no noise).
     Spectrum smokeTransmittance(const Ray& ray, double start, double end) const;
     // The same through `h` and the smoke (`h` in closed form).

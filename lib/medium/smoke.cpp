@@ -8,6 +8,8 @@
 #include <glm/matrix.hpp>
 
 #include "scene/raypath.h"
+#include "spectrum/binned_spectrum.h"
+#include "spectrum/colorimetry.h"
 #include "spectrum/rgb_to_spectrum.h"
 
 namespace brume {
@@ -41,7 +43,7 @@ double keyFrameTime(const SceneObject& o, const std::string& word) {
 std::shared_ptr<const GridSequence> readFrames(const SceneObject& o, std::span<const std::string> words,
                                                const std::string& gridName) {
     if (words.empty() || (words.size() > 1 && words.size() % 2 != 0))
-        badSmoke(o, "expected [density=NAME] [temperature=NAME] then one file, or key frames as time and file pairs");
+        badSmoke(o, "expected [density=NAME] [temperature=NAME] [extinction=soot] then one file, or key frames as time and file pairs");
     std::vector<KeyFrame> frames;
     if (words.size() == 1) frames.push_back({0, loadGrid(o, words[0], gridName)});
     else
@@ -66,6 +68,13 @@ EmissionCells flameCells(const SmokeVolume& smoke, const SmokeDescription& d) {
 
 }  // namespace
 
+Spectrum sootExtinction() {
+    constexpr double kFirst = 360, kLast = 830;
+    std::vector<double> bins;  // 1 nm bins centred on whole nanometres
+    for (double nm = kFirst; nm <= kLast; nm += 1) bins.push_back(std::pow(nm / 633, -1.39));
+    return spectrumFromBins(bins, kFirst - 0.5, kLast + 0.5);
+}
+
 SmokeDescription readSmoke(const SceneObject& o) {
     if (!o.integers.empty()) badSmoke(o, "expected no integers");
     const std::vector<double>& r = o.reals;
@@ -81,14 +90,24 @@ SmokeDescription readSmoke(const SceneObject& o) {
     smoke.g = g;
     // Last: the arguments are checked before any file is read.
     std::span<const std::string> words = o.strings;
-    std::string density = "density", temperature;
+    std::string density = "density", temperature, extinction;
     for (; !words.empty() && words[0].find('=') != std::string::npos; words = words.subspan(1)) {
         const std::string& w = words[0];
         std::string value = w.substr(w.find('=') + 1);
+        if (w.starts_with("extinction=")) {
+            if (value != "soot" && value != "grey") badSmoke(o, "unknown extinction '" + value + "' (soot, grey)");
+            extinction = value;
+            continue;
+        }
         if (w.starts_with("density=")) density = value;
         else if (w.starts_with("temperature=")) temperature = value;
-        else badSmoke(o, "unknown keyword '" + w + "' (density=, temperature=)");
+        else badSmoke(o, "unknown keyword '" + w + "' (density=, temperature=, extinction=)");
         if (value.empty()) badSmoke(o, "empty grid name in '" + w + "'");
+    }
+    if (extinction == "soot") {
+        if (r[1] != r[0] || r[2] != r[0]) badSmoke(o, "extinction=soot takes one K, at 633 nm: the three must be equal");
+        smoke.extinctionAt633 = r[0];
+        smoke.extinctionPerDensity = sootExtinction() * float(r[0]);
     }
     smoke.frames = readFrames(o, words, density);
     if (!temperature.empty()) smoke.temperature = readFrames(o, words, temperature);
@@ -108,6 +127,11 @@ SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsP
         blackbodies_ = std::make_shared<const BlackbodyTable>();
         flames_ = flameCells(*this, description_);
     }
+}
+
+double SmokeVolume::quotedExtinctionPerDensity(QuotedExtinction quoted) const {
+    if (quoted == QuotedExtinction::At633nm && description_.extinctionAt633) return *description_.extinctionAt633;
+    return photopic(description_.extinctionPerDensity);
 }
 
 double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
@@ -136,12 +160,16 @@ void SmokeVolume::forEachRun(const Ray& ray, double tmin, double tmax, Even&& ev
     flush();
 }
 
-Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax) const {
-    double depth = 0;  // ∫ density dt
+double SmokeVolume::densityIntegral(const Ray& ray, double tmin, double tmax) const {
+    double sum = 0;
     forEachRun(
-        ray, tmin, tmax, [&](double t0, double t1, double density) { depth += density * (t1 - t0); },
-        [&](double t0, double t1) { depth += description_.frames->integral(ray, t0, t1, time_); });
-    return transmittance(depth);
+        ray, tmin, tmax, [&](double t0, double t1, double density) { sum += density * (t1 - t0); },
+        [&](double t0, double t1) { sum += description_.frames->integral(ray, t0, t1, time_); });
+    return sum;
+}
+
+Spectrum SmokeVolume::transmittance(const Ray& ray, double tmin, double tmax) const {
+    return transmittance(densityIntegral(ray, tmin, tmax));
 }
 
 Spectrum SmokeVolume::transmittance(double integral) const {

@@ -2,6 +2,7 @@
 // participating medium: extinction per unit density (K_m for soot in kg/m³), scattering albedo, Henyey–Greenstein g.
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "medium/emission_cells.h"
@@ -21,10 +22,22 @@ struct SmokeDescription {
     double g = 0;                   // Henyey–Greenstein mean cosine (> 0 forward)
     // Flames: temperature (K) at the same key frames, or null. What the smoke absorbs it emits as a black body.
     std::shared_ptr<const GridSequence> temperature;
+    // Soot (extinction=soot): K given at 633 nm, where FDS's mass extinction coefficient and the measurements
+    // behind it are, and extinctionPerDensity that times sootExtinction(); else none.
+    std::optional<double> extinctionAt633;
 };
 
+// Which K a study quotes for one number (Jin's law): at 633 nm, as FDS's VISIBILITY and FDSVisMap do (soot's K
+// as given; any other smoke's photopic mean), or the photopic mean of every smoke's K, as the eye sees it.
+enum class QuotedExtinction { At633nm, Photopic };
+
+// Soot's extinction relative to its value at 633 nm, K(λ)/K(633) = (λ/633 nm)^−1.39 (Hottel's correlation for
+// soot in the visible; bands' averages, in RGB the spectrum's colour): 1.20 in the photopic mean.
+Spectrum sootExtinction();
+
 // Reads a `smoke` object's arguments (see rtrace(1), "Smoke") and loads its grids, found along RAYPATH:
-//   N [density=GRID] file.vdb | N [density=GRID] t1 file1.vdb t2 file2.vdb …   0   3|6|7 K K K [a a a [g]]
+//   N [density=GRID] [temperature=GRID] [extinction=soot] file.vdb | … t1 file1.vdb t2 file2.vdb …   0
+//   3|6|7 K K K [a a a [g]]
 // A single file is static; key-frame times are the ones written (metadata such as FDS's fds_time_s is not
 // read). Throws Error "file:line: bad smoke 'id': …".
 SmokeDescription readSmoke(const SceneObject& object);
@@ -48,6 +61,10 @@ public:
     // Where the flames glow, for next-event estimation (empty where the smoke does not emit).
     const EmissionCells& flames() const { return flames_; }
     const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
+    // The one K per unit density a study quotes (QuotedExtinction).
+    double quotedExtinctionPerDensity(QuotedExtinction quoted) const;
+    // ∫ density dt between tmin and tmax, exactly (as transmittance() finds it).
+    double densityIntegral(const Ray& ray, double tmin, double tmax) const;
     const Spectrum& albedo() const { return description_.albedo; }
     double g() const { return description_.g; }
     // Calls f(t0, t1, majorant, minorant) -> bool for consecutive stretches of [tmin, tmax] along the ray inside

@@ -141,6 +141,9 @@ void RenderScene::addSmoke() {
             throw Error(o.where, "modifier '" + m->name + "' of smoke '" + o.name + "' is a " + m->type +
                                      ": expected a spectrum, specfile or specfunc");
         SmokeDescription smoke = readSmoke(o);
+        if (m && smoke.extinctionAt633)
+            throw Error(o.where, "smoke '" + o.name + "' has extinction=soot and a spectrum, '" + m->name +
+                                     "', as its modifier: one spectral extinction or the other");
         if (m) {
             PatternEvaluator evaluator(*modifiers_);
             PatternHit origin{dvec3(0), dvec3(0, 0, 1), dvec3(0, 0, 1)};
