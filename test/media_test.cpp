@@ -341,6 +341,14 @@ TEST(Smoke, SootDimsEachBandByItsOwnExtinction) {
     }
     EXPECT_LT(luminance[0], std::exp(-0.7));  // darker than at 633 nm: the eye's K is larger
     EXPECT_NEAR(luminance[1], luminance[0], 0.01 * luminance[0]);
+    // Soot's spectrum or a modifier's, not both.
+    try {
+        TestScene both("void spectrum blue 0 0 5 400 700 2 1 1\nblue smoke s 2 extinction=soot even.vdb 0 3 .1 .1 .1\n");
+        ADD_FAILURE() << "a soot smoke with a spectrum modifier was taken";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("smoke 's' has extinction=soot and a spectrum, 'blue', as its modifier"),
+                  std::string::npos) << e.what();
+    }
 }
 
 // Flames: smoke of albedo 0 at 3000 K emits what it absorbs as a black body, so a ray through d of it sees
