@@ -40,7 +40,7 @@ private:
                      const PathState& state, PathContext& ctx, Spectrum& value) const;
     Spectrum continued(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
                        PathContext& ctx, bool sharesSources) const;
-    int inScatteringSamples(double length, bool fromRecords) const;
+    int inScatteringSamples(double length, bool fromRecords, bool flames) const;
     bool collisionsShine(bool emits, const PathState& state) const;
 
     const RenderScene& scene_;

@@ -19,6 +19,14 @@ struct PortalChoice {
     SphericalPolygon view;
 };
 
+// A source to draw distances toward in media (a lamp, or the flames' bounding sphere): its guessed single
+// scattering along the ray, where it is, its radius and intensity.
+struct SourceGuess {
+    double guess;
+    dvec3 centre;
+    double radius, intensity;
+};
+
 struct Scratch {
     explicit Scratch(const RenderScene& scene) : patterns(scene.modifiers()) {}
 
@@ -27,7 +35,7 @@ struct Scratch {
     std::optional<dvec3> lastStart;
     InsideVolumes mistsAtLastStart;
     std::vector<double> perSource;                               // next-event estimation's value per source
-    std::vector<std::pair<double, const Light*>> sourceGuesses;  // sources to draw distances toward in media
+    std::vector<SourceGuess> sourceGuesses;                      // sources to draw distances toward in media
     std::vector<PortalChoice> portals;                           // how a point sees each portal
 };
 

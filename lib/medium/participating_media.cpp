@@ -87,6 +87,7 @@ ParticipatingMedia::ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(
             flameBox_.include(cells.box());
         }
     for (Flame& f : flames_) f.share /= power;
+    flamePower_ = power;
 }
 
 dvec3 ParticipatingMedia::sampleFlame(double u0, double u1, double u2, double u3) const {

@@ -32,6 +32,8 @@ public:
     dvec3 sampleFlame(double u0, double u1, double u2, double u3) const;
     double flameDirectionDensity(const dvec3& from, const dvec3& dir) const;
     const Bounds3& flameBox() const { return flameBox_; }
+    // ∫ brightness(σ_a B) dV over the flames: their intensity, as a lamp's radiance × its size².
+    double flamePower() const { return flamePower_; }
     // The light the flames emit toward ray.org along [start, end], ∫ T σ_a B dt with T from `start` through
     // `h` and the smoke, and in `transmittance` T over the whole stretch (both exact in T: the smokes' densities
     // along the ray, DensityProfile). `points` distances stratified over where the flames' first collision
@@ -41,7 +43,7 @@ public:
     // follow what draws at 2·points places would weigh (PiecewiseConstant), so that the hot core a ray
     // crosses, or the hot side of a ramping edge, gets the draws its light asks for.
     Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
-                          Spectrum& transmittance, int points = 8) const;
+                          Spectrum& transmittance, int points = 16) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
     bool scatters(const HomogeneousMedium& h) const;
     // The Henyey–Greenstein g of what scatters along [start, end], to guide sampling: the mean g of the
@@ -76,6 +78,7 @@ private:
     std::vector<SmokeVolume> smoke_;
     std::vector<Flame> flames_;
     Bounds3 flameBox_;
+    double flamePower_ = 0;
 };
 
 }  // namespace brume
