@@ -41,7 +41,8 @@ public:
     // times T from the flames to the point over theirs: at most B (1 − e^{−τ}), so even flames are right per
     // ray however thick (their near side) or thin (all along). Where the temperature varies, half the draws
     // follow what draws at 2·points places would weigh (PiecewiseConstant), so that the hot core a ray
-    // crosses, or the hot side of a ramping edge, gets the draws its light asks for.
+    // crosses, or the hot side of a ramping edge, gets the draws its light asks for. 16 points by default (view
+    // rays): through the core of make demo's plume a ray's spread is 0.9 %, 2.5 % with 8.
     Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
                           Spectrum& transmittance, int points = 16) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
