@@ -90,7 +90,7 @@ def trace(bin_dir, tmp, scene, lines, options, repeats, threads=1):
     return means, errors, t.cpu
 
 
-def reference(bin_dir, tmp, case, lines, stored, remake):
+def reference(bin_dir, tmp, case, lines, stored, remake, commit):
     """The case's path-traced reference (kept in `stored`): per-pixel means and standard errors."""
     name, scene, _, options = case
     direct = options[options.index("-ab") + 1] == "0"
@@ -102,7 +102,7 @@ def reference(bin_dir, tmp, case, lines, stored, remake):
         return kept["means"], kept["errors"]
     print(f"  {name}: tracing the reference ({' '.join(opts)} x{repeats}, two threads)", file=sys.stderr)
     means, errors, cpu = trace(bin_dir, tmp, scene, lines, opts, repeats, threads=2)
-    stored[name] = {"key": key, "means": means, "errors": errors, "cpu": cpu, "commit": git_commit()}
+    stored[name] = {"key": key, "means": means, "errors": errors, "cpu": cpu, "commit": commit}
     return means, errors
 
 
@@ -182,6 +182,7 @@ def main():
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
     ap.add_argument("--remake-reference", action="store_true")
     args = ap.parse_args()
+    commit = git_commit()  # what was built, as the run starts
     stored = json.load(open(STORED)) if os.path.exists(STORED) else {}
     rows, series, notes = [], {}, []
     with tempfile.TemporaryDirectory() as tmp:
@@ -190,7 +191,7 @@ def main():
         for case in cases(tmp):
             name, scene, view, options = case
             lines = rays(args.bin, tmp, view)
-            means, errors = reference(args.bin, tmp, case, lines, stored, args.remake_reference)
+            means, errors = reference(args.bin, tmp, case, lines, stored, args.remake_reference, commit)
             own = None
             for method, rungs in ladders(options).items():
                 points = series[f"{name}: {method}"] = []
@@ -209,7 +210,7 @@ def main():
                          f"{stored[name]['cpu']:.0f} CPU s on two threads, {stored[name]['commit']}).")
     with open(STORED, "w") as f:
         json.dump(stored, f)
-    text = (f"# Fire pictures: time against error\n\nBrume {git_commit()}, one thread (bench/fire.py; its docstring "
+    text = (f"# Fire pictures: time against error\n\nBrume {commit}, one thread (bench/fire.py; its docstring "
             "says what is measured).\n\nPlanck: a flame along one ray (mean of 16 rays against Planck, spread of one "
             "ray)\n\n| T | K (1/m) | RGB | 41 bands, -pY |\n|---|---|---|---|\n" + "\n".join(planck) +
             "\n\n| picture | method | options | CPU s | RMS | p99.9/RMS | RMS, reference's own "
