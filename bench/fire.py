@@ -14,7 +14,8 @@ the first bounce, once; the caches (-aa .1 and .05 at -ad 1024: records shared b
 each ray once. Error: the RMS over the pixels of (value − reference) over the mean reference luminance, with the
 reference's own error (from its repeats' spread) taken out in the last column; "p99.9/RMS": the 99.9th
 percentile of the pixels' absolute errors over their RMS (3.3 for errors of a normal law; a heavy tail shows as
-more). One thread, CPU seconds; the time to 2 % interpolated along each ladder (bench.time_to), on the errors
+more); beside it the RMS of the pixels' relative errors (those above a hundredth of the mean luminance: a flame's
+core is a thousand times the mean, and its pixels make most of the first RMS). One thread, CPU seconds; the time to 2 % interpolated along each ladder (bench.time_to), on the errors
 with the reference's own taken out. The references (path tracing, REFERENCE_REPEATS repeats at -ab 0, -ad 2048
 and REFERENCE_AD_REPEATS repeats at -ab 1, on two threads) are kept in results/fire_references.json, made anew
 when the scene, the options or the rays change or with --remake-reference.
@@ -115,13 +116,17 @@ def ladders(options):
 
 
 def measure(values, means, errors):
-    """(RMS, RMS with the reference's own taken out, p99.9 of |error| over RMS), over the mean luminance."""
+    """(RMS, RMS with the reference's own taken out, p99.9 of |error| over RMS, the reference's own), over the mean
+    luminance; and the RMS of the pixels' relative errors (of those above a hundredth of the mean luminance)."""
     mean = sum(means) / len(means)
     diffs = sorted(abs(v - r) for v, r in zip(values, means))
     rms = (sum(d * d for d in diffs) / len(diffs)) ** .5
     own = (sum(e * e for e in errors) / len(errors)) ** .5
     p999 = diffs[min(len(diffs) - 1, int(math.ceil(0.999 * len(diffs))) - 1)]
-    return rms / mean, math.sqrt(max(0.0, rms * rms - own * own)) / mean, p999 / rms if rms > 0 else 0, own / mean
+    lit = [((v - r) / r) ** 2 for v, r in zip(values, means) if r > 0.01 * mean]
+    relative = (sum(lit) / len(lit)) ** .5
+    return (rms / mean, math.sqrt(max(0.0, rms * rms - own * own)) / mean, p999 / rms if rms > 0 else 0, own / mean,
+            relative)
 
 
 CUBE = """import pyopenvdb as vdb, sys
@@ -197,11 +202,11 @@ def main():
                 points = series[f"{name}: {method}"] = []
                 for repeats, opts in rungs:
                     values, _, cpu = trace(args.bin, tmp, scene, lines, opts, repeats)
-                    rms, net, tail, own = measure(values, means, errors)
+                    rms, net, tail, own, relative = measure(values, means, errors)
                     points.append((cpu, net))
                     shown = " ".join(opts[:opts.index("-ab")]) + (f" x{repeats}" if repeats > 1 else "")
                     rows.append(f"| {name} | {method} | {shown} | {cpu:.1f} | {100 * rms:.2f} % "
-                                f"| {tail:.2f} | {100 * net:.2f} % |")
+                                f"| {tail:.2f} | {100 * net:.2f} % | {100 * relative:.1f} % |")
                     print(f"  {name}, {method} {' '.join(opts)} x{repeats}: {cpu:.1f} s, {100 * rms:.2f} %, "
                           f"p99.9 {tail:.2f} x RMS", file=sys.stderr)
                 t = time_to(points, TARGET)
@@ -214,7 +219,7 @@ def main():
             "says what is measured).\n\nPlanck: a flame along one ray (mean of 16 rays against Planck, spread of one "
             "ray)\n\n| T | K (1/m) | RGB | 41 bands, -pY |\n|---|---|---|---|\n" + "\n".join(planck) +
             "\n\n| picture | method | options | CPU s | RMS | p99.9/RMS | RMS, reference's own "
-            "out |\n|---|---|---|---|---|---|---|\n" + "\n".join(rows) + "\n\n" + "\n".join(notes) + "\n")
+            "out | pixels' relative RMS |\n|---|---|---|---|---|---|---|---|\n" + "\n".join(rows) + "\n\n" + "\n".join(notes) + "\n")
     write_result(text, "fire.md", ladders_plot(series, os.path.join(RESULTS, "fire_time_vs_error.png"),
                                                "Fire pictures: time against error", ": ", "path"),
                  "fire_time_vs_error.png")
