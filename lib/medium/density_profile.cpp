@@ -33,17 +33,39 @@ std::vector<DensityProfile::Piece>::const_iterator DensityProfile::pieceAt(doubl
     return std::lower_bound(pieces_.begin(), pieces_.end(), t, [](const Piece& p, double x) { return p.b < x; });
 }
 
-double DensityProfile::integral(double t) const {
+double DensityProfile::integral(double t) const { return at(t).integral; }
+
+double DensityProfile::density(double t) const { return at(t).density; }
+
+DensityProfile::Point DensityProfile::at(double t) const {
     auto p = pieceAt(t);
-    if (p == pieces_.end()) return total();
-    return p->before + integralOf(*p, t);
+    if (p == pieces_.end()) return {total(), 0};
+    if (t < p->a) return {p->before, 0};
+    const double s = t - p->a;
+    return {p->before + integralOf(*p, t), std::max(0.0, p->c[0] + s * (p->c[1] + s * (p->c[2] + s * p->c[3])))};
 }
 
-double DensityProfile::density(double t) const {
-    auto p = pieceAt(t);
-    if (p == pieces_.end() || t < p->a) return 0;
-    const double s = t - p->a;
-    return std::max(0.0, p->c[0] + s * (p->c[1] + s * (p->c[2] + s * p->c[3])));
+double DensityProfile::inverse(double integral) const {
+    if (pieces_.empty()) return 0;
+    // The last piece that starts at or below the integral sought.
+    auto p = std::upper_bound(pieces_.begin(), pieces_.end(), integral,
+                              [](double x, const Piece& q) { return x < q.before; });
+    p = p == pieces_.begin() ? p : std::prev(p);
+    const double target = integral - p->before;
+    double lo = 0, hi = p->b - p->a;
+    if (!(target < integralOf(*p, p->b))) return p->b;
+    if (!(target > 0)) return p->a;
+    // Newton's steps on the piece's integral (its derivative the density), bisection where they stray.
+    double s = hi * target / integralOf(*p, p->b);
+    for (int i = 0; i < 60 && hi - lo > 1e-13 * (1 + std::abs(p->a)); ++i) {
+        double f = integralOf(*p, p->a + s) - target;
+        if (std::abs(f) <= 1e-14 * (1 + integral)) break;
+        (f < 0 ? lo : hi) = s;
+        double rho = p->c[0] + s * (p->c[1] + s * (p->c[2] + s * p->c[3]));
+        double next = rho > 0 ? s - f / rho : -1;
+        s = next > lo && next < hi ? next : 0.5 * (lo + hi);
+    }
+    return p->a + s;
 }
 
 DensityProfile DensityProfile::sum(const DensityProfile& p, double w, const DensityProfile& q, double v) {

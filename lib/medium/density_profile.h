@@ -26,6 +26,14 @@ public:
 
     // ∫ density dt from the first piece to t (0 before it, the total after the last).
     double integral(double t) const;
+    // The same and the density at t, from one search for t's piece.
+    struct Point {
+        double integral, density;
+    };
+    Point at(double t) const;
+    // The t where integral(t) reaches `integral` (in [0, total()]): the first piece's start for 0, the last's
+    // end past the total.
+    double inverse(double integral) const;
     double total() const { return pieces_.empty() ? 0 : pieces_.back().before + integralOf(pieces_.back(), pieces_.back().b); }
     // The density at t (0 outside the pieces, never negative).
     double density(double t) const;

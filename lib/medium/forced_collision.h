@@ -80,10 +80,16 @@ public:
     double reach() const { return reach_; }
     CdfAndDensity cdfAndDensity(double t) const {
         double depth = 0, sigma = 0;
-        for (const Term& term : terms_)
-            depth += term.scale * term.profile->integral(t), sigma += term.scale * term.profile->density(t);
+        for (const Term& term : terms_) {
+            DensityProfile::Point p = term.profile->at(t);
+            depth += term.scale * p.integral, sigma += term.scale * p.density;
+        }
         return {-std::expm1(-depth) / reach_, sigma * std::exp(-depth) / reach_};
     }
+    // Of one term, the distance where the cumulative distribution reaches u, in closed form but for the
+    // inverse of the profile's integral (DensityProfile::inverse): no search over the whole ray.
+    bool invertible() const { return terms_.size() == 1; }
+    double sample(double u) const { return terms_[0].profile->inverse(-std::log1p(-u * reach_) / terms_[0].scale); }
 
 private:
     std::vector<Term> terms_;

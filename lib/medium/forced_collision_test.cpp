@@ -101,6 +101,16 @@ TEST(DepthCollision, DrawsFollowTheTrueExtinctionsFirstCollisionWithinTheSegment
     DepthCollision depth({{&a, scaleA}, {&b, scaleB}});
     EXPECT_NEAR(depth.reach(), -std::expm1(-(scaleA * a.total() + scaleB * b.total())), 1e-12);
     expectDrawsFollowItsDensity(depth);
+    // One smoke's: the closed-form inverse lands where the mixture's search does.
+    DepthCollision one({{&a, scaleA}});
+    DistanceMixture alone(kSegments.front().t0, kSegments.back().t1);
+    alone.add(1, &one);
+    ASSERT_TRUE(one.invertible());
+    EXPECT_FALSE(depth.invertible());
+    for (int i = 0; i < 1000; ++i) {
+        double u = (i + 0.5) / 1000;
+        EXPECT_NEAR(one.sample(u), alone.sample(u), 1e-7) << u;
+    }
 }
 
 // Toward a point beside the ray, one beyond its end, and one nearly on it (h held at minDistance); plain, and

@@ -51,17 +51,18 @@ double bandOf(const Spectrum& s, ParticipatingMedia::Band band) {
     return least;
 }
 
-// Σ weighed(t_k)/(guide's density × points) over `points` distances drawn from `mixture` through a guide: what a
-// draw at the middle of each of 2·points bins of the mixture's cumulative distribution weighs (weighed(t), the
-// integrand over the mixture's density), which half of the draws then follow (PiecewiseConstant), stratified
-// over the guide's distribution. Where the integrand is even in the mixture's terms (even smoke of one
-// temperature) the guide is uniform and every draw weighs the same.
-template <class Weighed>
-Spectrum guidedSum(const DistanceMixture& mixture, int points, Random& random, const Weighed& weighed) {
+// Σ weighed(t_k)/(guide's density × points) over `points` distances drawn (draw(u, from): the distance where a
+// mixture's cumulative distribution reaches u, searched for from `from`) through a guide: what a draw at the
+// middle of each of 2·points bins of the distribution weighs (weighed(t), the integrand over the mixture's
+// density), which half of the draws then follow (PiecewiseConstant), stratified over the guide's
+// distribution. Where the integrand is even in the mixture's terms (even smoke of one temperature) the guide is
+// uniform and every draw weighs the same.
+template <class Draw, class Weighed>
+Spectrum guidedSum(const Draw& draw, int points, Random& random, const Weighed& weighed) {
     std::vector<double> guess(size_t(2 * points));
     double t = -std::numeric_limits<double>::infinity();
     for (size_t j = 0; j < guess.size(); ++j) {
-        t = mixture.sample((double(j) + 0.5) / double(guess.size()), t);  // in order: each searched for from the last
+        t = draw((double(j) + 0.5) / double(guess.size()), t);  // in order: each searched for from the last
         guess[j] = brightness(weighed(t));
     }
     PiecewiseConstant guide(guess, 0.5);
@@ -70,7 +71,7 @@ Spectrum guidedSum(const DistanceMixture& mixture, int points, Random& random, c
     t = -std::numeric_limits<double>::infinity();
     for (int k = 0; k < points; ++k) {
         double x = guide.sample((k + u) / points);
-        t = mixture.sample(x, t);
+        t = draw(x, t);
         sum += weighed(t) * float(1 / (guide.density(x) * points));
     }
     return sum;
@@ -116,22 +117,31 @@ Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double e
         clear.push_back({&along[v], bandOf(k, Band::Smallest)});
         lo = std::min(lo, along[v].pieces().front().a), hi = std::max(hi, along[v].pieces().back().b);
     }
-    auto transmittanceTo = [&](double t) {  // from `start`, per band
-        Spectrum out = h.transmittance(t - start);
-        for (size_t v = 0; v < smoke_.size(); ++v)
-            if (!along[v].empty()) out *= smoke_[v].transmittance(along[v].integral(t));
-        return out;
+    // T from `start` to t, per band, times what the flames emit at t (the densities from the profiles).
+    auto light = [&](double t) {
+        Spectrum through = h.transmittance(t - start), glow(0.f);
+        for (size_t v = 0; v < smoke_.size(); ++v) {
+            if (along[v].empty()) continue;
+            DensityProfile::Point q = along[v].at(t);
+            through *= smoke_[v].transmittance(q.integral);
+            if (smoke_[v].emits()) glow += smoke_[v].emission(ray.at(t), q.density);
+        }
+        return through * glow;
     };
-    transmittance = transmittanceTo(end);
+    transmittance = h.transmittance(end - start);
+    for (size_t v = 0; v < smoke_.size(); ++v)
+        if (!along[v].empty()) transmittance *= smoke_[v].transmittance(along[v].total());
     DepthCollision near(std::move(dense)), far(std::move(clear));
     if (!(near.reach() > 0)) return Spectrum(0.f);
     bool mixed = far.reach() > 0 && far.reach() != near.reach();
     DistanceMixture mixture(lo, hi);
     mixture.add(mixed ? 0.5 : 1.0, &near);
     if (mixed) mixture.add(0.5, &far);
-    return guidedSum(mixture, points, random, [&](double t) {
+    // One flame of one extinction (grey, or RGB's even smoke): the draws invert its profile directly.
+    auto draw = [&](double u, double from) { return mixed || !near.invertible() ? mixture.sample(u, from) : near.sample(u); };
+    return guidedSum(draw, points, random, [&](double t) {
         double density = mixture.density(t);
-        return density > 0 ? transmittanceTo(t) * emission(ray.at(t)) * float(1 / density) : Spectrum(0.f);
+        return density > 0 ? light(t) * float(1 / density) : Spectrum(0.f);
     });
 }
 

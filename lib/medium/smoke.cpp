@@ -136,9 +136,9 @@ double SmokeVolume::quotedExtinctionPerDensity(QuotedExtinction quoted) const {
 
 double SmokeVolume::density(const dvec3& p) const { return description_.frames->density(p, time_); }
 
-Spectrum SmokeVolume::emission(const dvec3& p) const {
-    return blackbodies_->at(description_.temperature->density(p, time_)) * extinction(p) *
-           (Spectrum(1.f) - description_.albedo);
+Spectrum SmokeVolume::emission(const dvec3& p, double density) const {
+    return blackbodies_->at(description_.temperature->density(p, time_)) * description_.extinctionPerDensity *
+           float(density) * (Spectrum(1.f) - description_.albedo);
 }
 
 // Consecutive cells of uneven smoke make one run: one walk through the voxels.

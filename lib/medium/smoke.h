@@ -57,7 +57,9 @@ public:
     bool emits() const { return description_.temperature != nullptr; }
     // What the smoke emits per unit length at p: σ_a(p)·B(T(p)), B Planck's radiance (as emitted light adds
     // along a ray: ∫ T σ_a B dt).
-    Spectrum emission(const dvec3& p) const;
+    Spectrum emission(const dvec3& p) const { return emission(p, density(p)); }
+    // The same where the density is known (a DensityProfile's, along a ray).
+    Spectrum emission(const dvec3& p, double density) const;
     // Where the flames glow, for next-event estimation (empty where the smoke does not emit).
     const EmissionCells& flames() const { return flames_; }
     const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
