@@ -9,16 +9,19 @@ Scenes (examples/flame: make_flame's plume, 1500 K at its core, soot K_m 8700 m�
   thick     the same plume with five times the soot (K_m 43,500: its core about 8.5 /m, a flame one cannot see
             into) seen from 1.2 m over 50°, -ab 1 (32 x 32 rays): the flame's light comes from its near side,
             through its own cooler soot, and its smoke scatters it.
-Path tracing (-aa 0) at -ab 0 repeats each ray r = 1, 4, 16 times; at -ab 1 it takes -ad 64, 256, 1024 rays at
-the first bounce, once; the caches (-aa .1 and .05 at -ad 1024: records shared by all the picture's rays) trace
-each ray once. Error: the RMS over the pixels of (value − reference) over the mean reference luminance, with the
-reference's own error (from its repeats' spread) taken out in the last column; "p99.9/RMS": the 99.9th
-percentile of the pixels' absolute errors over their RMS (3.3 for errors of a normal law; a heavy tail shows as
-more); beside it the RMS of the pixels' relative errors (those above a hundredth of the mean luminance: a flame's
-core is a thousand times the mean, and its pixels make most of the first RMS). One thread, CPU seconds; the time to 2 % interpolated along each ladder (bench.time_to), on the errors
-with the reference's own taken out. The references (path tracing, REFERENCE_REPEATS repeats at -ab 0, -ad 2048
-and REFERENCE_AD_REPEATS repeats at -ab 1, on two threads) are kept in results/fire_references.json, made anew
-when the scene, the options or the rays change or with --remake-reference.
+Path tracing (-aa 0, -ad 128 at -ab 1) repeats each ray r = 1, 4, 16 times; the caches (-aa .1 and .05, -ad
+1024; records shared by all the picture's rays and repeats) r = 1 and 4 times, at -ab 1: the error of these
+pictures is mostly the view rays' own (the flame's light along them, and the light their smoke scatters, with a
+phase function's ray from each of its points at -ab 1), which -ad does not lower. With --before BIN, path
+tracing by another build too (the session's start), on the same rays. Error: the RMS over the pixels of (value −
+reference) over the mean reference luminance, with the reference's own error (from its repeats' spread) taken
+out; "p99.9/RMS": the 99.9th percentile of the pixels' absolute errors over their RMS (3.3 for errors of a normal
+law); beside them the same two for the pixels' relative errors (those above a hundredth of the mean luminance):
+a flame's core is a thousand times the mean luminance, and two or three of its pixels make most of the first
+RMS, and of its tail. One thread, CPU seconds; the time to 2 % interpolated along each ladder (bench.time_to), on
+the relative RMS. The references (path tracing, REFERENCE_REPEATS repeats at -ab 0; -ad 512 and
+REFERENCE_AD_REPEATS repeats at -ab 1; on two threads) are kept in results/fire_references.json, made anew when
+the scene, the options or the rays change or with --remake-reference.
 Before them, flames seen along one ray (the table "Planck"): a cube of smoke 2 m across at 1500 K and 2000 K (its
 temperature grid wider than its density's), albedo 0, K 0.5 to 500 /m, 16 rays face-on through its middle at
 rtrace -ab 0 -u+, in RGB and with -cs 41 -pY: their mean luminance against Planck's B (1 − e^{−2K}) (683 lm/W
@@ -39,10 +42,9 @@ from bench import RESULTS, ROOT, Timer, git_commit, ladders_plot, lux, read_rgb,
 
 ROOM = os.path.join(ROOT, "examples", "flame", "room.rad")
 STORED = os.path.join(RESULTS, "fire_references.json")
-REFERENCE_REPEATS, REFERENCE_AD, REFERENCE_AD_REPEATS = 256, "2048", 16
-PATHS = [1, 4, 16]            # repeats at -ab 0
-PATH_AD = ["64", "256", "1024"]  # -ad at -ab 1
-CACHED = [".1", ".05"]
+REFERENCE_REPEATS, REFERENCE_AD, REFERENCE_AD_REPEATS = 256, "512", 64
+PATHS = [1, 4, 16]
+CACHED = [(".1", 1), (".1", 4), (".05", 4)]
 TARGET = 0.02
 ROOM_VIEW = ["-vp", "-2.3", "-1.8", "1.5", "-vd", "1", "0.85", "-0.35", "-vh", "80", "-vv", "62"]
 THICK_VIEW = ["-vp", "-1.2", "0", "0.5", "-vd", "1", "0", "0", "-vh", "50", "-vv", "50", "-x", "32", "-y", "32"]
@@ -111,22 +113,28 @@ def ladders(options):
     """{method: [(repeats, options)]} of a case."""
     if options[options.index("-ab") + 1] == "0":
         return {"path tracing": [(r, ["-aa", "0"] + options) for r in PATHS]}
-    return {"path tracing": [(1, ["-aa", "0", "-ad", ad] + options) for ad in PATH_AD],
-            "cache": [(1, ["-aa", a, "-ad", "1024", "-al+"] + options) for a in CACHED]}
+    return {"path tracing": [(r, ["-aa", "0", "-ad", "128"] + options) for r in PATHS],
+            "cache": [(r, ["-aa", a, "-ad", "1024", "-al+"] + options) for a, r in CACHED]}
 
 
 def measure(values, means, errors):
-    """(RMS, RMS with the reference's own taken out, p99.9 of |error| over RMS, the reference's own), over the mean
-    luminance; and the RMS of the pixels' relative errors (of those above a hundredth of the mean luminance)."""
+    """Over the mean luminance: the RMS error with the reference's own taken out, the p99.9 of |error| over the RMS;
+    and the same two of the pixels' relative errors (those above a hundredth of the mean luminance); and the
+    reference's own two RMS errors."""
     mean = sum(means) / len(means)
-    diffs = sorted(abs(v - r) for v, r in zip(values, means))
-    rms = (sum(d * d for d in diffs) / len(diffs)) ** .5
+
+    def rms_and_tail(diffs, own):
+        diffs = sorted(abs(d) for d in diffs)
+        rms = (sum(d * d for d in diffs) / len(diffs)) ** .5
+        p999 = diffs[min(len(diffs) - 1, int(math.ceil(0.999 * len(diffs))) - 1)]
+        return math.sqrt(max(0.0, rms * rms - own * own)), p999 / rms if rms > 0 else 0
+
+    lit = [(v, r, e) for v, r, e in zip(values, means, errors) if r > 0.01 * mean]
     own = (sum(e * e for e in errors) / len(errors)) ** .5
-    p999 = diffs[min(len(diffs) - 1, int(math.ceil(0.999 * len(diffs))) - 1)]
-    lit = [((v - r) / r) ** 2 for v, r in zip(values, means) if r > 0.01 * mean]
-    relative = (sum(lit) / len(lit)) ** .5
-    return (rms / mean, math.sqrt(max(0.0, rms * rms - own * own)) / mean, p999 / rms if rms > 0 else 0, own / mean,
-            relative)
+    own_relative = (sum((e / r) ** 2 for _, r, e in lit) / len(lit)) ** .5
+    absolute, tail = rms_and_tail([v - r for v, r in zip(values, means)], own)
+    relative, relative_tail = rms_and_tail([(v - r) / r for v, r, _ in lit], own_relative)
+    return absolute / mean, tail, relative, relative_tail, own / mean, own_relative
 
 
 CUBE = """import pyopenvdb as vdb, sys
@@ -185,6 +193,7 @@ def planck_table(bin_dir, tmp):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
+    ap.add_argument("--before", help="another build's bin directory, whose path tracing runs the same ladders")
     ap.add_argument("--remake-reference", action="store_true")
     args = ap.parse_args()
     commit = git_commit()  # what was built, as the run starts
@@ -197,31 +206,37 @@ def main():
             name, scene, view, options = case
             lines = rays(args.bin, tmp, view)
             means, errors = reference(args.bin, tmp, case, lines, stored, args.remake_reference, commit)
-            own = None
-            for method, rungs in ladders(options).items():
+            runs = [(method, args.bin, rungs) for method, rungs in ladders(options).items()]
+            if args.before:
+                runs.append(("path tracing, before", args.before, ladders(options)["path tracing"]))
+            for method, bin_dir, rungs in runs:
                 points = series[f"{name}: {method}"] = []
                 for repeats, opts in rungs:
-                    values, _, cpu = trace(args.bin, tmp, scene, lines, opts, repeats)
-                    rms, net, tail, own, relative = measure(values, means, errors)
-                    points.append((cpu, net))
+                    values, _, cpu = trace(bin_dir, tmp, scene, lines, opts, repeats)
+                    rms, tail, relative, relative_tail, own, own_relative = measure(values, means, errors)
+                    points.append((cpu, relative))
                     shown = " ".join(opts[:opts.index("-ab")]) + (f" x{repeats}" if repeats > 1 else "")
-                    rows.append(f"| {name} | {method} | {shown} | {cpu:.1f} | {100 * rms:.2f} % "
-                                f"| {tail:.2f} | {100 * net:.2f} % | {100 * relative:.1f} % |")
-                    print(f"  {name}, {method} {' '.join(opts)} x{repeats}: {cpu:.1f} s, {100 * rms:.2f} %, "
-                          f"p99.9 {tail:.2f} x RMS", file=sys.stderr)
+                    rows.append(f"| {name} | {method} | {shown} | {cpu:.1f} | {100 * rms:.2f} % | {tail:.1f} "
+                                f"| {100 * relative:.2f} % | {relative_tail:.1f} |")
+                    print(f"  {name}, {method} {' '.join(opts)} x{repeats}: {cpu:.1f} s, {100 * rms:.2f} % "
+                          f"(p99.9 {tail:.1f}x), relative {100 * relative:.2f} % (p99.9 {relative_tail:.1f}x)",
+                          file=sys.stderr)
                 t = time_to(points, TARGET)
-                notes.append(f"- {name}, {method}: " + (f"2 % at about {t:.1f} CPU s" if t else "not at 2 % on its ladder"))
-            notes.append(f"- {name}: the reference's own error {100 * own:.2f} % ({len(lines)} rays, "
-                         f"{stored[name]['cpu']:.0f} CPU s on two threads, {stored[name]['commit']}).")
+                notes.append(f"- {name}, {method}: " + (f"2 % (relative) at about {t:.1f} CPU s" if t
+                                                        else "not at 2 % (relative) on its ladder"))
+            notes.append(f"- {name}: the reference's own error {100 * own:.2f} % over the mean luminance, "
+                         f"{100 * own_relative:.2f} % relative ({len(lines)} rays, {stored[name]['cpu']:.0f} CPU s on "
+                         f"two threads, {stored[name]['commit']}).")
     with open(STORED, "w") as f:
         json.dump(stored, f)
     text = (f"# Fire pictures: time against error\n\nBrume {commit}, one thread (bench/fire.py; its docstring "
             "says what is measured).\n\nPlanck: a flame along one ray (mean of 16 rays against Planck, spread of one "
             "ray)\n\n| T | K (1/m) | RGB | 41 bands, -pY |\n|---|---|---|---|\n" + "\n".join(planck) +
-            "\n\n| picture | method | options | CPU s | RMS | p99.9/RMS | RMS, reference's own "
-            "out | pixels' relative RMS |\n|---|---|---|---|---|---|---|---|\n" + "\n".join(rows) + "\n\n" + "\n".join(notes) + "\n")
+            "\n\nPictures (errors with the reference's own taken out):\n\n| picture | method | options | CPU s | "
+            "RMS over the mean | p99.9/RMS | pixels' relative RMS | p99.9/RMS |\n|---|---|---|---|---|---|---|---|\n" +
+            "\n".join(rows) + "\n\n" + "\n".join(notes) + "\n")
     write_result(text, "fire.md", ladders_plot(series, os.path.join(RESULTS, "fire_time_vs_error.png"),
-                                               "Fire pictures: time against error", ": ", "path"),
+                                               "Fire pictures: time against relative error", ": ", "path"),
                  "fire_time_vs_error.png")
 
 
