@@ -65,6 +65,8 @@ if ((!skip_smoke)); then
     python3 "$here/volume_cache.py" --bin "$bin"
     echo
     python3 "$here/vismap.py" --bin "$bin"
+    echo
+    python3 "$here/fire.py" --bin "$bin"
 fi
 if ((!skip_daylight)); then
     echo
