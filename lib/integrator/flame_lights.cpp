@@ -34,10 +34,9 @@ Spectrum FlameLights::sample(const Scatterer& at, const SurfaceId& surface, cons
         double u0, u1;
         sobol2D(k, scramble, u0, u1);
         double u2 = ctx.rng.uniform(), u3 = ctx.rng.uniform();
-        dvec3 toward = smoke.sampleFlame(u0, u1, u2, u3) - p;
-        double length = glm::length(toward);
-        if (!(length > 0)) continue;
-        dvec3 dir = toward / length;
+        std::optional<dvec3> drawn = smoke.sampleFlameDirection(p, u0, u1, u2, u3);
+        if (!drawn) continue;
+        const dvec3& dir = *drawn;
         double density = smoke.flameDirectionDensity(p, dir);
         if (!(density > 0)) continue;
         Spectrum f = at.response(dir, density * n);

@@ -3,7 +3,7 @@
 // from the point's lobes or phase function, which keep only their share of the flame light they meet
 // (rayShare; Lambertian lobes leave all of it here, as they do every source's).
 //
-// A sample draws a point where the flames glow (ParticipatingMedia::sampleFlame) for its direction only: along
+// A sample draws a direction toward where the flames glow (ParticipatingMedia::sampleFlameDirection): along
 // that direction, through the flames' box, the light the smoke emits toward the point, ∫ T σ_a B dt up to
 // whatever stops shadow rays, is estimated whole (ShadowRays::flameLightAlong), so that a thick flame's light
 // comes from its near side and a thin one's from all along. The direction's density per steradian, in closed

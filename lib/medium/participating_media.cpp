@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+
+#include <glm/vector_relational.hpp>
 
 #include "medium/forced_collision.h"
 #include "sampling/piecewise_constant.h"
@@ -91,16 +94,36 @@ ParticipatingMedia::ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(
     flamePower_ = power;
 }
 
-dvec3 ParticipatingMedia::sampleFlame(double u0, double u1, double u2, double u3) const {
+// Half inside the flames' box, none outside it (where points drawn are at least as far as the box's faces).
+double ParticipatingMedia::flameSphereShare(const dvec3& from) const {
+    const bool inside = glm::all(glm::greaterThanEqual(from, flameBox_.lo)) && glm::all(glm::lessThanEqual(from, flameBox_.hi));
+    return inside ? 0.5 : 0.0;
+}
+
+std::optional<dvec3> ParticipatingMedia::sampleFlameDirection(const dvec3& from, double u0, double u1, double u2,
+                                                              double u3) const {
+    const double sphere = flameSphereShare(from);
+    if (u0 < sphere) {  // uniform over the sphere
+        u0 /= sphere;
+        double z = 1 - 2 * u0, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * std::numbers::pi * u1;
+        return dvec3(r * std::cos(phi), r * std::sin(phi), z);
+    }
+    u0 = std::min((u0 - sphere) / (1 - sphere), 0x1.fffffffffffffp-1);
     size_t i = 0;
     for (; i + 1 < flames_.size() && u0 >= flames_[i].share; ++i) u0 -= flames_[i].share;
-    return smoke_[flames_[i].volume].flames().sample(std::min(u0 / flames_[i].share, 0x1.fffffffffffffp-1), u1, u2, u3);
+    const EmissionCells& cells = smoke_[flames_[i].volume].flames();
+    dvec3 toward = cells.sample(std::min(u0 / flames_[i].share, 0x1.fffffffffffffp-1), u1, u2, u3) - from;
+    double length = glm::length(toward);
+    if (!(length > 0)) return std::nullopt;
+    return toward / length;
 }
 
 double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3& dir) const {
-    double sum = 0;
-    for (const Flame& f : flames_) sum += f.share * smoke_[f.volume].flames().directionDensity(from, dir);
-    return sum;
+    if (flames_.empty()) return 0;
+    double cells = 0;
+    for (const Flame& f : flames_) cells += f.share * smoke_[f.volume].flames().directionDensity(from, dir);
+    const double sphere = flameSphereShare(from);
+    return (1 - sphere) * cells + sphere / (4 * std::numbers::pi);
 }
 
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,

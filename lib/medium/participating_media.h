@@ -3,6 +3,7 @@
 // volumes, which are where their grids say whatever the ray crossed. Extinction adds up; a scattering event
 // picks one of them by its scattering coefficient.
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "medium/homogeneous_medium.h"
@@ -25,11 +26,15 @@ public:
     // What the flames emit per unit length at p (see SmokeVolume::emission).
     Spectrum emission(const dvec3& p) const;
 
-    // Flames as light sources: points drawn where they glow (each smoke's EmissionCells, chosen in proportion
-    // to its power), the density per steradian of the directions such draws give from a point, and the box
-    // they lie in. No flame: none, and every direction's density is 0.
+    // Flames as light sources: directions from `from` toward where they glow, for u0..u3 uniform in [0, 1) (none
+    // where a point drawn is `from` itself), and their density per steradian; no flame: every direction's
+    // density is 0. Points drawn in each smoke's EmissionCells (chosen in proportion to its power), and, from
+    // inside the flames' box, half the directions uniform over the sphere: there the points drawn near `from`
+    // give directions of density ∝ t³ whose light, ∝ t, is not small (the 1/r² of a source one stands in), and
+    // the sphere's 1/4π bounds their weights. (A wall's pixel beside make demo's plume at -ab 1, 5000 paths:
+    // one 23 times the mean without.)
     bool hasFlames() const { return !flames_.empty(); }
-    dvec3 sampleFlame(double u0, double u1, double u2, double u3) const;
+    std::optional<dvec3> sampleFlameDirection(const dvec3& from, double u0, double u1, double u2, double u3) const;
     double flameDirectionDensity(const dvec3& from, const dvec3& dir) const;
     const Bounds3& flameBox() const { return flameBox_; }
     // ∫ brightness(σ_a B) dV over the flames: their intensity, as a lamp's radiance × its size².
@@ -72,6 +77,8 @@ public:
     void scattering(const dvec3& p, const HomogeneousMedium& h, const Spectrum& scale, PhaseMixture& out) const;
 
 private:
+    // The share of the directions drawn uniformly over the sphere (sampleFlameDirection).
+    double flameSphereShare(const dvec3& from) const;
     struct Flame {
         size_t volume;  // in smoke_ (an index: the media may be moved or copied)
         double share;   // of the draws
