@@ -179,7 +179,9 @@ TEST(Flames, InsideAnIsothermalScatteringFlameEachOrderAddsAlbedoTimesTheOneBefo
             m.add(photopic(test::trace(integrator, dvec3(0.995), glm::normalize(dvec3(0.3, 0.5, 0.81)), uint64_t(i)).value));
         const double expected = (1 - std::pow(albedo, bounces + 2)) * b;
         EXPECT_NEAR(m.value(), expected, 0.01 * expected + 4 * m.standardError()) << "-ab " << bounces;
-        if (bounces == 0) EXPECT_LT(m.standardError() * 8 / m.value(), 0.10);
+        if (bounces == 0) {
+            EXPECT_LT(m.standardError() * 8 / m.value(), 0.10);
+        }
     }
 }
 

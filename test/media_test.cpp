@@ -335,8 +335,9 @@ TEST(Smoke, SootDimsEachBandByItsOwnExtinction) {
         Spectrum soot = sootExtinction();
         TestScene t(scene);
         Spectrum v = test::trace(Integrator(t.render, settings("")), kView.org, kView.dir, 0).value;
-        if (bands == 41)
+        if (bands == 41) {
             for (int b = 0; b < bands; ++b) EXPECT_NEAR(v[b], std::exp(-0.7 * soot[b]), 1e-5) << "band " << b;
+        }
         luminance[bands == 3] = photopic(v);
     }
     EXPECT_LT(luminance[0], std::exp(-0.7));  // darker than at 633 nm: the eye's K is larger

@@ -39,7 +39,22 @@ openvdb::FloatGrid::Ptr readFloatGrid(const std::string& path, const std::string
     return floats;
 }
 
-OpenVdbGrid::OpenVdbGrid(openvdb::FloatGrid::Ptr vdb, std::string source, std::vector<std::string>& warnings) {
+namespace {
+// The active voxels of `grid` in the box `b`, the rest 0.
+DenseVoxels denseCopy(const openvdb::FloatGrid& grid, const openvdb::CoordBBox& b) {
+    DenseVoxels dense(indexBox(b));
+    openvdb::CoordBBox box;
+    for (auto it = grid.tree().cbeginValueOn(); it; ++it) {
+        if (!it.getBoundingBox(box)) continue;
+        const float v = *it;
+        for (auto c = box.begin(); c; ++c) dense.at(glm::ivec3((*c).x(), (*c).y(), (*c).z())) = v;
+    }
+    return dense;
+}
+}  // namespace
+
+OpenVdbGrid::OpenVdbGrid(openvdb::FloatGrid::Ptr vdb, std::string source, std::vector<std::string>& warnings,
+                         Copy copy) {
     if (vdb->getGridClass() == openvdb::GRID_LEVEL_SET) throw Error(source + " is a level set, not a density");
     if (!vdb->transform().isLinear())
         throw Error(source + " has a frustum (non-linear) transform; only linear ones are read");
@@ -63,6 +78,9 @@ OpenVdbGrid::OpenVdbGrid(openvdb::FloatGrid::Ptr vdb, std::string source, std::v
     }
     if (hostile) warnings.push_back(source + ": " + std::to_string(hostile) + " NaN, infinite or negative voxels read as 0");
     active_ = vdb->evalActiveVoxelBoundingBox();
+    if (copy == Copy::WhenSmall && !active_.empty() &&
+        double(active_.volume()) * sizeof(float) <= 2.0 * double(vdb->memUsage()))
+        dense_ = denseCopy(*vdb, active_);
     grid_ = std::move(vdb);
 }
 
@@ -79,6 +97,17 @@ Bounds3 OpenVdbGrid::bounds() const {
 }
 
 double OpenVdbGrid::density(const dvec3& p) const {
+    if (!dense_.empty()) {
+        const openvdb::Vec3d x = grid_->worldToIndex(openvdb::Vec3d(p.x, p.y, p.z));
+        for (int a = 0; a < 3; ++a)  // no smoke a voxel or more outside the box (nor int overflow far away)
+            if (!(x[a] > active_.min()[a] - 1 && x[a] < active_.max()[a] + 1)) return 0;
+        const openvdb::Vec3d lo(std::floor(x.x()), std::floor(x.y()), std::floor(x.z())), f = x - lo;
+        float c[8];
+        dense_.cellCorners(glm::ivec3(int(lo.x()), int(lo.y()), int(lo.z())), c);
+        auto mix = [](double a, double b, double t) { return a + t * (b - a); };
+        return mix(mix(mix(c[0], c[1], f.x()), mix(c[2], c[3], f.x()), f.y()),
+                   mix(mix(c[4], c[5], f.x()), mix(c[6], c[7], f.x()), f.y()), f.z());
+    }
     // An unsafe accessor does not register with the tree (a locked table): cheap to make per lookup, and
     // the tree never changes after load.
     auto voxels = grid_->getConstUnsafeAccessor();
@@ -123,9 +152,13 @@ float OpenVdbGrid::minimum(const IndexBox& box) const {
     return std::max(0.0f, m);
 }
 
-// One accessor for the whole batch: consecutive cells along a ray share the tree's nodes it caches, and, one
-// step apart along an axis, the four corners of the face between them.
+// From the copy where there is one; else one accessor for the whole batch: consecutive cells along a ray share
+// the tree's nodes it caches, and, one step apart along an axis, the four corners of the face between them.
 void OpenVdbGrid::cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const {
+    if (!dense_.empty()) {
+        for (std::size_t n = 0; n < cells.size(); ++n) dense_.cellCorners(cells[n], &corners[8 * n]);
+        return;
+    }
     auto accessor = grid_->getConstUnsafeAccessor();
     for (std::size_t n = 0; n < cells.size(); ++n) {
         float* c = &corners[8 * n];
