@@ -8,6 +8,7 @@
 #include "integrator/render_options.h"
 #include "io/ray_reader.h"
 #include "io/value_writer.h"
+#include "medium/smoke.h"
 #include "render/sequence.h"
 #include "scene/reader.h"
 #include "util/header.h"
@@ -96,6 +97,8 @@ int run(int argc, char** argv) {
     setSpectralSampling(o.render.sampling);
     Scene scene = loadScene(line->scene);
     RenderScene renderScene(scene, o.render.materials);
+    const double instant = o.render.time.value_or(0);
+    checkInstants(renderScene.smoke(), {&instant, 1});
     Sequence sequence(scene, renderScene, o.render);
     const Integrator& integrator = sequence.integrator();
     ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene, o.color);
@@ -116,11 +119,11 @@ int run(int argc, char** argv) {
         records.assign(rays.size(), RayRecord{});
         trees.assign(writer.tracing() ? rays.size() : 0, RayTree{{}, writer.tracesShadowRays()});
         uint64_t base = batches.first();
-        sequence.run(rays.size(), o.render.time.value_or(0), [&](size_t i, WorkItem& item) {
+        sequence.run(rays.size(), instant, [&](size_t i, WorkItem& item) {
             const InputRay& in = rays[i];
             if (in.zero) return;
             RayTree* tree = trees.empty() ? nullptr : &trees[i];
-            RayQuery q{in.org, in.dir, base + i, o.render.time.value_or(0), o.limitDistance ? in.maxDistance : 0};
+            RayQuery q{in.org, in.dir, base + i, instant, o.limitDistance ? in.maxDistance : 0};
             if (o.irradiance) records[i] = integrator.irradiance(q, item, tree);
             else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(q, item, tree);
             else records[i] = integrator.trace(q, item, tree);

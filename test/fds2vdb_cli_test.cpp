@@ -56,11 +56,17 @@ TEST(Fds2vdb, WritesTheImportedValuesAndASmokeObjectThatRenders) {
     // The object renders: a ray along the room's length through the smoke at 20 s, toward a white glow. The smoke
     // scatters only a fifth, and -ab 0 with no light source leaves only what it lets through.
     std::ofstream(dir / "wall.rad") << "void glow white 0 0 4 1 1 1 0\nwhite polygon far 0 0 12 3 -1 -1 3 2 -1 3 2 2 3 -1 2\n";
-    Output trace = brume_test::runBrume("echo '-1 0.5 0.95 1 0 0' | rtrace -h -ab 0 -ov wall.rad smoke.rad", dir);
+    Output trace = brume_test::runBrume("echo '-1 0.5 0.95 1 0 0' | rtrace -h -ab 0 -ov -T 10 wall.rad smoke.rad", dir);
     ASSERT_EQ(trace.status, 0) << trace.err;
     double red = std::stod(trace.out);
     EXPECT_LT(red, 0.9) << trace.out;  // the ceiling's smoke at 10-11 s, 2 m of it
     EXPECT_GT(red, 0.0) << trace.out;
+    // Without -T the run is at 0 s, before the case's frames: an error naming them, and no output.
+    Output before = brume_test::runBrume("echo '-1 0.5 0.95 1 0 0' | rtrace -h -ab 0 -ov wall.rad smoke.rad", dir);
+    EXPECT_NE(before.status, 0);
+    EXPECT_EQ(before.out, "");
+    EXPECT_NE(before.err.find("smoke.rad:"), std::string::npos) << before.err;
+    EXPECT_NE(before.err.find("no data at 0 s, outside its 2 key frames (10 to 11 s"), std::string::npos) << before.err;
     // -g: soot's 633 nm K in every band, as before soot's spectrum was written.
     Output grey = brume_test::runBrume("fds2vdb -g -t 10 '" + smv + "'", dir);
     ASSERT_EQ(grey.status, 0) << grey.err;

@@ -387,16 +387,19 @@ TEST(Smoke, InstantsBetweenKeyFramesInterpolate) {
     writeBox(dir, "three.vdb", 3.0f);
     TestScene t(kPanel + "void smoke s 4 20 three.vdb 10 one.vdb 0 3 .1 .1 .1\n");
     double previous = 2;
-    for (double time : {0.0, 10.0, 12.5, 15.0, 17.5, 20.0, 30.0}) {
+    for (double time : {10.0, 12.5, 15.0, 17.5, 20.0}) {
         RenderSettings s = settings("");
         s.time = time;
         Integrator integrator(t.render, s);
-        double density = 1 + 2 * std::clamp((time - 10) / 10, 0.0, 1.0);
+        double density = 1 + 2 * (time - 10) / 10;
         double v = test::trace(integrator, kView.org, kView.dir, 0).value[0];
         EXPECT_NEAR(v, std::exp(-0.7 * density), 1e-5) << time;
         EXPECT_LE(v, previous) << time;
         previous = v;
     }
+    RenderSettings before = settings("");
+    before.time = 5;
+    EXPECT_THROW(Integrator(t.render, before), Error);  // no data before the first frame
 }
 
 // Single scattering in thin heterogeneous smoke: density ρ = x along a linear ramp (trilinear interpolation of
@@ -525,8 +528,8 @@ TEST(Smoke, StaticObserverSeesSmokeEvolveSmoothly) {
     const double t60 = opticalDepth(60), t90 = opticalDepth(90), t120 = opticalDepth(120);
     ASSERT_GT(t90, 0.2);   // the smoke is there and thickens
     ASSERT_GT(t120, t90);
-    for (double time = 50; time <= 130; time += 10) {
-        const double w = std::clamp((time - 60) / 30, 0.0, 2.0);
+    for (double time = 60; time <= 120; time += 10) {
+        const double w = (time - 60) / 30;
         const double tau = w <= 1 ? (1 - w) * t60 + w * t90 : (2 - w) * t90 + (w - 1) * t120;
         RenderSettings s = settings("");
         s.time = time;

@@ -306,6 +306,16 @@ TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
     r = error("-S nowhere.txt -wp route.txt", "");
     EXPECT_EQ(r.err, "vismap: nowhere.txt: cannot be opened\n");
     EXPECT_EQ(r.out, "");
+    // An instant outside the smoke's key frames: no data there, not the nearest frame's smoke; nothing written.
+    using namespace brume::medium::testing;
+    writeGrid(dir_ / "thin.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f, 0.1));
+    writeGrid(dir_ / "thick.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 3.0f, 0.1));
+    std::ofstream(dir_ / "smoke.rad") << "void smoke s 4 10 thin.vdb 20 thick.vdb 0 3 .1 .1 .1\n";
+    r = error("-S bad_signs.txt -wp route.txt -T 10,30 smoke.rad", "sign emitting\n");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "vismap: smoke.rad:1: smoke 's': no data at 30 s, outside its 2 key frames (10 to 20 s; -T sets "
+                     "the instant)\n");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 
 #include "integrator/render_options.h"
 #include "io/picture.h"
+#include "medium/smoke.h"
 #include "render/progress.h"
 #include "render/sequence.h"
 #include "scene/reader.h"
@@ -268,6 +269,7 @@ int run(int argc, char** argv) {
     std::vector<SignTargets> signs = loadSigns(o.signs, scene, o.rays);
     std::vector<double> instants = o.instants.empty() ? std::vector<double>{0} : o.instants;
     RenderScene renderScene(scene, o.render.materials);
+    checkInstants(renderScene.smoke(), instants);
     Sequence sequence(scene, renderScene, o.render);
     const Integrator& integrator = sequence.integrator();
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));

@@ -38,7 +38,8 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       mediaTransport_(scene, settings_, lights_, cache_, *this, roulette_) {
     const Bounds3& extent = scene.geometry().extent();
     epsilon_ = 1e-7 * (extent.empty() ? 1.0 : glm::length(extent.hi - extent.lo));
-    media_.prepare(settings.time.value_or(0));
+    // Smoke that evolves has no instant until a run names one (-T, a frame's): 0 may be outside its frames.
+    if (settings.time || !scene.variesInTime()) media_.prepare(settings.time.value_or(0));
 }
 
 void Integrator::moveTo(double time) {

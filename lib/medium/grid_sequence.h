@@ -19,7 +19,8 @@ public:
     // message names no source: the caller says whose frames they are).
     explicit GridSequence(std::vector<KeyFrame> frames);
 
-    // Linear in time between the key frames around `time`; the first or last frame's density outside them.
+    // Linear in time between the key frames around `time`; the first or last frame's density outside them
+    // (SmokeVolume refuses such instants: none reaches a run).
     double density(const dvec3& p, double time) const;
     // ∫ density(ray.at(t), time) dt over [t0, t1], exactly (DensityGrid::integral).
     double integral(const Ray& ray, double t0, double t1, double time) const;

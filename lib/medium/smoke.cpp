@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <span>
 
 #include <glm/matrix.hpp>
@@ -75,6 +76,14 @@ Spectrum sootExtinction() {
     return spectrumFromBins(bins, kFirst - 0.5, kLast + 0.5);
 }
 
+namespace {
+std::string seconds(double t) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", t);
+    return text;
+}
+}  // namespace
+
 SmokeDescription readSmoke(const SceneObject& o) {
     if (!o.integers.empty()) badSmoke(o, "expected no integers");
     const std::vector<double>& r = o.reals;
@@ -85,6 +94,8 @@ SmokeDescription readSmoke(const SceneObject& o) {
     const double g = r.size() == 7 ? r[6] : 0;
     if (!(std::abs(g) < 1)) badSmoke(o, "g must be strictly between -1 and 1");
     SmokeDescription smoke;
+    smoke.where = o.where;
+    smoke.name = o.name;
     smoke.extinctionPerDensity = spectrumFromRgb(r[0], r[1], r[2]);
     smoke.albedo = r.size() >= 6 ? spectrumFromRgb(r[3], r[4], r[5]) : Spectrum(0.f);
     smoke.g = g;
@@ -114,6 +125,19 @@ SmokeDescription readSmoke(const SceneObject& o) {
     return smoke;
 }
 
+void checkInstants(const std::vector<SmokeDescription>& smoke, std::span<const double> times) {
+    for (const SmokeDescription& s : smoke) {
+        const std::vector<KeyFrame>& frames = s.frames->keyFrames();
+        if (frames.size() < 2) continue;  // static
+        for (double t : times)
+            if (!(t >= frames.front().time && t <= frames.back().time))
+                throw Error(s.where, "smoke '" + s.name + "': no data at " + seconds(t) + " s, outside its " +
+                                         std::to_string(frames.size()) + " key frames (" +
+                                         seconds(frames.front().time) + " to " + seconds(frames.back().time) +
+                                         " s; -T sets the instant)");
+    }
+}
+
 SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsPerCell)
     : description_(smoke),
       time_(time),
@@ -123,6 +147,7 @@ SmokeVolume::SmokeVolume(const SmokeDescription& smoke, double time, int voxelsP
       // half an ulp, and the majorant must still bound it.
       scale_(smoke.extinctionPerDensity.maxValue() * (1 + 0x1p-23)),
       scaleDown_(smoke.extinctionPerDensity.maxValue() * (1 - 0x1p-23)) {
+    checkInstants({smoke}, {&time, 1});
     if (emits()) {
         blackbodies_ = std::make_shared<const BlackbodyTable>();
         flames_ = flameCells(*this, description_);

@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "medium/emission_cells.h"
@@ -16,6 +17,8 @@ namespace brume {
 
 // What a `smoke` object says, read once per scene.
 struct SmokeDescription {
+    SourceLocation where;  // of the smoke object, and its name: for messages
+    std::string name;
     std::shared_ptr<const GridSequence> frames;
     Spectrum extinctionPerDensity;  // σ_t per unit density, per band of the current spectral sampling
     Spectrum albedo;                // σ_s / σ_t
@@ -42,10 +45,15 @@ Spectrum sootExtinction();
 // read). Throws Error "file:line: bad smoke 'id': …".
 SmokeDescription readSmoke(const SceneObject& object);
 
+// Error ("file:line: smoke 'name': no data at …", naming its frames) where one of `times` is outside the key
+// frames of smoke that evolves: before the first or after the last there is no data, and the nearest frame's
+// soot is not to stand in for it. Programs call it before they write anything; SmokeVolume checks its own.
+void checkInstants(const std::vector<SmokeDescription>& smoke, std::span<const double> times);
+
 // The smoke at one instant of the scene: what rays are tracked through. Thread-safe const members.
 class SmokeVolume {
 public:
-    // `voxelsPerCell`: the majorant grid's cell edge in voxels (MajorantGrid); 0 makes one cell of the whole
+    // Error at an instant outside the key frames (checkInstants). `voxelsPerCell`: the majorant grid's cell edge in voxels (MajorantGrid); 0 makes one cell of the whole
     // grid, which skips no empty space inside its box (for measuring what skipping saves).
     SmokeVolume(const SmokeDescription& smoke, double time, int voxelsPerCell = 8);
 

@@ -234,7 +234,7 @@ TEST(Smoke, MajorantsBoundExtinctionAndSegmentsCoverTheChordOfTheBox) {
     EXPECT_GT(inside, 1000);  // the test does meet smoke
 }
 
-TEST(Smoke, KeyFramesInterpolateLinearlyInTimeAndHoldOutside) {
+TEST(Smoke, KeyFramesInterpolateLinearlyInTimeAndRefuseInstantsOutside) {
     // Densities 1 at 10 s and 3 at 20 s: the mean at 15 s, exact since w = 0.5 and the values are small integers.
     RayPathDir dir;
     writeGrid(dir.path() / "thin.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f));
@@ -244,19 +244,36 @@ TEST(Smoke, KeyFramesInterpolateLinearlyInTimeAndHoldOutside) {
     EXPECT_EQ(SmokeVolume(smoke, 15).density(p), 2.0);
     EXPECT_EQ(SmokeVolume(smoke, 15).extinction(p)[1], 4.f);
     EXPECT_EQ(SmokeVolume(smoke, 12.5).density(p), 1.5);
-    EXPECT_EQ(SmokeVolume(smoke, 0).density(p), 1.0);
     EXPECT_EQ(SmokeVolume(smoke, 10).density(p), 1.0);
-    EXPECT_EQ(SmokeVolume(smoke, 1e9).density(p), 3.0);
-    // The majorant at an instant is that of the frames around it only, weighted as the density is (2·(½·1 + ½·3),
-    // widened by 2⁻²⁰ for the rounding of the weighted sum).
+    EXPECT_EQ(SmokeVolume(smoke, 20).density(p), 3.0);
+    // Before the first frame and after the last there is no data: not the nearest frame's smoke.
+    for (double outside : {0.0, 9.999, 20.001, 1e9}) {
+        try {
+            SmokeVolume(smoke, outside);
+            ADD_FAILURE() << outside << " s was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("smoke 's': no data at "), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("outside its 2 key frames (10 to 20 s"), std::string::npos) << e.what();
+        }
+    }
+    // The majorant at an instant is that of the frames around it only, weighted as the density is (2·1 at the
+    // first frame, 2·(½·1 + ½·3) at 15 s, widened by 2⁻²⁰ for the rounding of the weighted sum).
     const auto majorantAt = [&](double time) {
         double m = 0;
         SmokeVolume(smoke, time).forEachBound(Ray{dvec3(-5, 4.5, 4.5), dvec3(1, 0, 0)}, 0, 100,
                                               [&](double, double, double s, double) { return m = std::max(m, s), true; });
         return m;
     };
-    EXPECT_NEAR(majorantAt(5), 2.0, 2 * 0x1p-23);  // the scale's one-ulp rounding up
+    EXPECT_NEAR(majorantAt(10), 2.0, 2 * 0x1p-19);
     EXPECT_NEAR(majorantAt(15), 4.0, 4 * 0x1p-19);
+}
+
+// A single grid is static: any instant reads it.
+TEST(Smoke, OneGridServesEveryInstant) {
+    RayPathDir dir;
+    writeGrid(dir.path() / "thin.vdb", boxGrid({0, 0, 0}, {9, 9, 9}, 1.0f));
+    const SmokeDescription smoke = smokeOf("void smoke s 1 thin.vdb 0 3 2 2 2");
+    for (double time : {-5.0, 0.0, 1e9}) EXPECT_EQ(SmokeVolume(smoke, time).density(dvec3(4.5)), 1.0) << time;
 }
 
 TEST(Smoke, EmptyGridIsAValidSmokeWithNoMedium) {
