@@ -3,10 +3,16 @@ BUILD ?= build
 PREFIX ?= /usr/local
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps test demo bench install clean
+.PHONY: all deps programs test demo bench install clean
+
+# The programs, their OpenVDB module and the demo's flame maker: what the demo runs (not the test suite).
+PROGRAMS = rtrace rpict mkcache vwrays xform gensky gendaylit vismap fds2vdb make_flame brume_openvdb
 
 all: $(BUILD)/Makefile
 	cmake --build $(BUILD) -j $(JOBS)
+
+programs: $(BUILD)/Makefile
+	cmake --build $(BUILD) -j $(JOBS) --target $(PROGRAMS)
 
 $(BUILD)/Makefile: CMakeLists.txt
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DCMAKE_INSTALL_PREFIX=$(PREFIX)
@@ -17,7 +23,7 @@ deps:
 test: deps all
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-demo: deps all
+demo: deps programs
 	bash examples/demo.sh $(BUILD)/bin
 
 bench: all
