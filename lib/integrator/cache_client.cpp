@@ -1,5 +1,7 @@
 #include "integrator/cache_client.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "cache/hemisphere_samples.h"
@@ -144,7 +146,23 @@ VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scra
     VolumeRecord record = buildVolumeRecord(samples, sources, volumes_->kind().shape(), q.at.level,
                                             nearestSource(q.at.point), extinctionAt(q.at.point, child, ctx));
     record.time = q.at.time;
+    record.radius = float(heldRadius(record, child, ctx));
     return record;
+}
+
+double CacheClient::heldRadius(const VolumeRecord& r, const PathState& state, const PathContext& ctx) const {
+    const RecordShape& shape = volumes_->kind().shape();
+    const double eps = shape.accuracy, radius = r.radius;
+    double sigma = extinctionAt(r.point, state, ctx);
+    for (int k = 0; k < 6; ++k) {
+        dvec3 edge = r.point;
+        edge[k / 2] += k % 2 ? -radius : radius;
+        sigma = std::max(sigma, extinctionAt(edge, state, ctx));
+    }
+    double held = std::min(radius, eps / std::max(sigma, 1e-300));
+    const double lamp = nearestSource(r.point);
+    if (std::isfinite(lamp)) held = std::min(held, std::sqrt(eps) * lamp / (1 + std::sqrt(eps)));
+    return std::max(held, std::min(radius, eps * shape.minRadius));
 }
 
 double CacheClient::extinctionAt(const dvec3& p, const PathState& state, const PathContext& ctx) const {

@@ -9,6 +9,8 @@
 #include <numbers>
 
 #include "integrator/testing.h"
+#include "medium/testing.h"
+#include "ray_path_dir.h"
 
 using namespace brume;
 using namespace brume::integrator_testing;
@@ -202,3 +204,29 @@ TEST(CacheClient, RecordDivisionsScaleWithTheWeightBelowTheFirstBounce) {
     Parts few(kFloor, cached(8));
     EXPECT_EQ(divisions(few, 1, 0.01f), 8);
 }
+
+// A volume record's zone reaches no further into denser smoke than a record made there would: ε over the
+// largest extinction of its point and edge. Smoke of density 1 for x < 4.95 m and 20 beyond (voxels of 0.1 m,
+// trilinear between 4.9 and 5), K 1 /m, -aa .1: a record at x 4.85 would reach 0.1 m (ε / σ_t at its point),
+// to x 4.95 where σ_t is 10.5: held at 0.1 / 10.5. Deep in the thin side it keeps its 0.1 m; and near a lamp
+// the zone's edge stays within √ε of the edge's own distance.
+TEST(CacheClient, AVolumeRecordsZoneStopsWhereItsEdgeNeedsIt) {
+    RayPathDir dir;
+    auto grid = brume::medium::testing::boxGrid({0, 0, 0}, {99, 99, 99}, 1.0f, 0.1);
+    grid->tree().fill(openvdb::CoordBBox(openvdb::Coord(50, 0, 0), openvdb::Coord(99, 99, 99)), 20.0f, true);
+    brume::medium::testing::writeGrid(dir.path() / "step.vdb", grid);
+    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), false};
+    auto radius = [&](const std::string& scene, const dvec3& p) {
+        Parts parts(scene + "void smoke s 1 step.vdb 0 3 1 1 1\n", cached(64), nullptr, &volumes);
+        parts.tracer.value = Spectrum(kL);
+        RecordRequest q{Receiver{p, std::nullopt, 1, 0.0}, SurfaceId{}, 1, 9};
+        CacheVisit visit;
+        return double(parts.cache.makeVolumeRecord(q, parts.scratch, visit).radius);
+    };
+    EXPECT_NEAR(radius("", dvec3(2, 5, 5)), 0.1, 1e-6);
+    EXPECT_NEAR(radius("", dvec3(4.85, 5, 5)), 0.1 / 10.5, 1e-4);
+    const std::string lamp = "void light bright 0 0 3 100 100 100\nbright sphere bulb 0 0 4 2 5 5.4 0.01\n";
+    const double distance = 0.4 - 0.01, share = std::sqrt(0.1) / (1 + std::sqrt(0.1));
+    EXPECT_NEAR(radius(lamp, dvec3(2, 5, 5)), std::min(0.1, share * distance), 1e-6);
+}
+
