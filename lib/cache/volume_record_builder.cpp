@@ -49,8 +49,9 @@ double zoneRadius(const SphereSamples& s, const VolumeRecord& record, const Reco
                   double extinction) {
     const double eps = shape.accuracy;
     // The transmittance to the light's sources changes by about e^(−σ_t δ) over a move δ: within ε at the edge.
-    const double reach =
-        std::min({std::sqrt(eps) * nearestSource, nearestSurface(s), eps / std::max(extinction, 1e-300)});
+    // The edge within √ε of its own distance to the nearest lamp: r ≤ √ε (D − r).
+    const double nearLamp = std::sqrt(eps) * nearestSource / (1 + std::sqrt(eps));
+    const double reach = std::min({nearLamp, nearestSurface(s), eps / std::max(extinction, 1e-300)});
     if (shape.kind == RecordShape::Kind::Classic)
         return std::min(eps * std::clamp(s.harmonicMeanDistance(), shape.minRadius, shape.maxRadius),
                         std::max(reach, eps * shape.minRadius));

@@ -22,10 +22,12 @@ namespace brume {
 // errors of the records they cross), so that a first-order extrapolation errs by about ε Φ at the zone's
 // edge: r = √(2 ε Φ / Σ 2 E_i/d_i²), then at most the distance over which the gradient would double or zero
 // Φ. Classic zones: a sphere of radius ε R, R the samples' harmonic mean distance, clamped as surface
-// records'. Either way at most √ε times `nearestSource`, the distance to the nearest lamp (the light lamps
+// records'. Either way at most √ε / (1 + √ε) times `nearestSource`, the distance D to the nearest lamp, so
+// that the zone's edge is within √ε of its own distance to the lamp, r ≤ √ε (D − r) (the light lamps
 // scatter in the medium around them, which a record holds, comes from about that far, not from the surfaces
 // the rays met, and varies over that scale: as an equivalent point source of all the record's light there,
-// 2Φ/D²), never past the nearest surface the rays met (a wall between the point and a lookup may hide a
+// 2Φ/D²; a zone sized by its centre's distance alone reached nearer the lamp, where lookups read its dimmer
+// light), never past the nearest surface the rays met (a wall between the point and a lookup may hide a
 // source from one and not the other), and at most ε / σ_t, σ_t the media's `extinction` at the point (moving
 // by δ changes the transmittance toward every source by about e^(−σ_t δ), which no peak follows). The record's
 // instant is the caller's to set.

@@ -124,15 +124,16 @@ TEST(VolumeRecords, ZonesScaleWithTheDistanceOfTheLight) {
     EXPECT_GT(near.radius, 0);
 }
 
-// Near a lamp, whose light scattered around it is part of the record's, a zone reaches at most √ε times the
-// lamp's distance, however far the surfaces.
+// Near a lamp, whose light scattered around it is part of the record's, a zone's edge stays within √ε of its
+// own distance to the lamp, r = √ε (D − r), however far the surfaces.
 TEST(VolumeRecords, ZonesNearALampStayWithinAFractionOfItsDistance) {
     SphereSamples s(dvec3(0), 256, 1);
     for (int i = 0; i < s.count(); ++i) s.set(i, s.direction(i / s.columns(), i % s.columns(), 0.5, 0.5), Spectrum(1.f, 1), 4);
     RecordShape shape;
     shape.minRadius = 1e-3, shape.maxRadius = 100;
     EXPECT_GT(buildVolumeRecord(s, {}, shape, 0).radius, 0.5);
-    EXPECT_NEAR(buildVolumeRecord(s, {}, shape, 0, 0.5).radius, std::sqrt(shape.accuracy) * 0.5, 1e-6);
+    const double root = std::sqrt(shape.accuracy);
+    EXPECT_NEAR(buildVolumeRecord(s, {}, shape, 0, 0.5).radius, root * 0.5 / (1 + root), 1e-6);
 }
 
 // A record stands for its neighbours within its radius only, the more the nearer; two records that disagree

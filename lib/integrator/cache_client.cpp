@@ -143,26 +143,25 @@ VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scra
     tracePass(samples, 0, SurfaceId{}, child, ctx);
     int passes = volumePassesFor(samples, sourcesLight / (4 * std::numbers::pi), q.at.level);
     for (int p = 1; p < passes; ++p) tracePass(samples, samples.addPass(), SurfaceId{}, child, ctx);
+    const double extinction = extinctionAt(q.at.point, child, ctx);
     VolumeRecord record = buildVolumeRecord(samples, sources, volumes_->kind().shape(), q.at.level,
-                                            nearestSource(q.at.point), extinctionAt(q.at.point, child, ctx));
+                                            nearestSource(q.at.point), extinction);
     record.time = q.at.time;
-    record.radius = float(heldRadius(record, child, ctx));
+    record.radius = float(heldRadius(record, extinction, child, ctx));
     return record;
 }
 
-double CacheClient::heldRadius(const VolumeRecord& r, const PathState& state, const PathContext& ctx) const {
+double CacheClient::heldRadius(const VolumeRecord& r, double extinction, const PathState& state,
+                               const PathContext& ctx) const {
     const RecordShape& shape = volumes_->kind().shape();
     const double eps = shape.accuracy, radius = r.radius;
-    double sigma = extinctionAt(r.point, state, ctx);
+    double sigma = extinction;
     for (int k = 0; k < 6; ++k) {
         dvec3 edge = r.point;
         edge[k / 2] += k % 2 ? -radius : radius;
         sigma = std::max(sigma, extinctionAt(edge, state, ctx));
     }
-    double held = std::min(radius, eps / std::max(sigma, 1e-300));
-    const double lamp = nearestSource(r.point);
-    if (std::isfinite(lamp)) held = std::min(held, std::sqrt(eps) * lamp / (1 + std::sqrt(eps)));
-    return std::max(held, std::min(radius, eps * shape.minRadius));
+    return std::max(std::min(radius, eps / std::max(sigma, 1e-300)), std::min(radius, eps * shape.minRadius));
 }
 
 double CacheClient::extinctionAt(const dvec3& p, const PathState& state, const PathContext& ctx) const {

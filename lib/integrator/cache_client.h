@@ -123,13 +123,12 @@ private:
     // The distance from p to the nearest lamp's surface (not less than its radius); infinite without lamps.
     double nearestSource(const dvec3& p) const;
     // Record r's zone radius kept where its edge needs it: at most ε over the largest extinction at its point
-    // and at the six points of its edge along the axes, and √ε / (1 + √ε) times its distance to the nearest
-    // lamp (so that its edge is within √ε of that edge's own distance). The builder's rules (ε / σ_t and √ε
-    // times the lamp's distance) look at the record's point only: a zone made on the thin or the far side of
-    // a change reached into the denser smoke or nearer the lamp as far as on its other side, and lookups
-    // there read the thinner side's light. In bench/furnace.py's blob at g 0 (one-record lookups, the blob's
-    // density falling outward), the wall's irradiance was 1 % low.
-    double heldRadius(const VolumeRecord& r, const PathState& state, const PathContext& ctx) const;
+    // (`extinction`, the builder's) and at the six points of its edge along the axes. The builder's ε / σ_t
+    // looks at the record's point only: a zone made on the thin side of a change reached into the denser
+    // smoke as far as on its other side, and lookups there read the thinner side's light. In
+    // bench/furnace.py's blob at g 0 (one-record lookups, the blob's density falling outward), the wall's
+    // irradiance was 1 % low.
+    double heldRadius(const VolumeRecord& r, double extinction, const PathState& state, const PathContext& ctx) const;
 
     const SurfaceCache* cache_;
     const VolumeCache* volumes_;
