@@ -206,9 +206,10 @@ if [ -f "$fds/model.smv" ]; then
     echo "Visibility maps: the fire hall of the shared FDS case (examples/hall), eyes at 1.7 m every 0.5 m"
     echo "  fds2vdb -t 60,120,180 -o hall_soot model.smv > hall_smoke.rad"
     bin_dir=$(cd "$bin" && pwd)
-    # Its warnings stand: the other seven meshes keep no 3D smoke and are left empty, which rays read as clear
-    # air. The eyes and signs below are within mesh 2; the light that reaches them from the rest of the hall
-    # crosses those empty meshes.
+    # Its warnings stand: the other seven meshes keep no 3D smoke and have no data (rtrace and vismap warn;
+    # vismap calls "no-data" the sight lines mostly through them; fds2vdb -l fills them from the 2.05 m slice).
+    # The eyes and signs below are within mesh 2; the light that reaches them from the rest of the hall crosses
+    # those meshes as clear air.
     (cd "$out" && "$bin_dir/fds2vdb" -t 60,120,180 -o hall_soot "$fds/model.smv" > hall_smoke.rad)
     hopts=(-g 10 0 15 5 0.5 1.7 -T 60,120,180 -ab 1 -ad 256 -n "$threads")
     for lighting in lights emergency; do

@@ -9,6 +9,7 @@
 
 #include "fds/fds_quantity.h"
 #include "fds/smv_index.h"
+#include "medium/data_coverage.h"
 #include "util/error.h"
 #include "util/header.h"
 #include "util/options.h"
@@ -23,6 +24,7 @@ struct Options {
     std::string prefix;            // of the files written; the case's CHID and the quantity by default
     bool flames = false;           // TEMPERATURE too, as the grid "temperature" (K)
     bool grey = false;             // soot's K in every band, not its spectrum
+    std::optional<SliceLayer> layer;  // meshes without 3D data filled from a 2D slice over these heights
 };
 
 const std::string kUsage = "usage: fds2vdb [options] case.smv > smoke.rad\n";
@@ -45,6 +47,14 @@ OptionTable makeTable(Options& o) {
     t.add("-o", 1, "prefix of the files written (default CHID_quantity)", [&o](const auto& a) { o.prefix = a[0]; });
     t.addBool("-f", o.flames, "also TEMPERATURE, in kelvin, as the grid 'temperature' (flames)");
     t.addBool("-g", o.grey, "soot's extinction grey, its 633 nm value in every band (default: soot's spectrum)");
+    t.add("-l", 1, "z0,z1: meshes without 3D data take a horizontal 2D slice's values from z0 to z1 (m)",
+          [&o](const auto& a) {
+              std::vector<double> z;
+              std::stringstream in(a[0]);
+              for (std::string word; std::getline(in, word, ',');) z.push_back(toReal("-l", word));
+              if (z.size() != 2 || !(z[0] < z[1])) throw UsageError("-l: expected two heights z0,z1 with z0 < z1", kUsage);
+              o.layer = SliceLayer{z[0], z[1]};
+          });
     return t;
 }
 
@@ -53,6 +63,37 @@ std::string fileWord(const std::string& quantity) {
     std::string w;
     for (char c : quantity) w += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '_';
     return w;
+}
+
+// Where the case has data: the meshes' boxes (the domain), those of the meshes read (a layer's heights only for a
+// mesh filled from a slice), and in words which mesh gave what.
+struct Coverage {
+    std::vector<Bounds3> domain, data;
+    std::string note;
+};
+
+Bounds3 meshBox(const FdsMesh& m) {
+    return {glm::dvec3(m.nodes[0].front(), m.nodes[1].front(), m.nodes[2].front()),
+            glm::dvec3(m.nodes[0].back(), m.nodes[1].back(), m.nodes[2].back())};
+}
+
+Coverage coverageOf(const SmvIndex& smv, const FdsQuantity& q, const std::optional<SliceLayer>& layer) {
+    Coverage c;
+    std::string none;
+    for (size_t m = 0; m < smv.meshes.size(); ++m) {
+        Bounds3 box = meshBox(smv.meshes[m]);
+        c.domain.push_back(box);
+        const std::string name = "mesh " + std::to_string(m + 1) + " (" + smv.meshes[m].id + ")";
+        switch (q.meshSources()[m]) {
+            case MeshSource::None: none += (none.empty() ? "" : ", ") + std::to_string(m + 1); continue;
+            case MeshSource::Layer: box.lo.z = std::max(box.lo.z, layer->lo), box.hi.z = std::min(box.hi.z, layer->hi); break;
+            case MeshSource::Volume: break;
+        }
+        c.data.push_back(box);
+        c.note += (c.note.empty() ? "" : "; ") + name + ": " + q.meshSourceNotes()[m];
+    }
+    if (!none.empty()) c.note += (c.note.empty() ? "" : "; ") + ("no data in mesh " + none);
+    return c;
 }
 
 openvdb::FloatGrid::Ptr gridOf(const LatticeVoxels& v, const std::string& name) {
@@ -97,7 +138,7 @@ int run(int argc, char** argv) {
     if (args.size() != first + 1) throw UsageError("expected one .smv file", kUsage + table.usage());
     const std::string smvPath = args[first];
     SmvIndex smv = readSmv(smvPath);
-    FdsQuantity quantity(smv, o.quantity, o.instants);
+    FdsQuantity quantity(smv, o.quantity, o.instants, o.layer);
     warnAll(quantity.warnings());
     std::optional<FdsQuantity> temperature;
     if (o.flames) {
@@ -106,13 +147,18 @@ int run(int argc, char** argv) {
     }
     const std::vector<double> instants = o.instants.empty() ? quantity.times() : o.instants;
     const std::string prefix = o.prefix.empty() ? smv.chid + "_" + fileWord(o.quantity) : o.prefix;
+    const Coverage coverage = coverageOf(smv, quantity, o.layer);
     openvdb::initialize();
     std::vector<std::string> files;
     for (double t : instants) {
         char name[64];
         std::snprintf(name, sizeof name, "_%08.3f.vdb", t);
         openvdb::GridPtrVec grids;
-        grids.push_back(gridOf(quantity.at(t), "density"));
+        openvdb::FloatGrid::Ptr density = gridOf(quantity.at(t), "density");
+        density->insertMeta("brume:domain", openvdb::StringMetadata(DataCoverage::format(coverage.domain)));
+        density->insertMeta("brume:data", openvdb::StringMetadata(DataCoverage::format(coverage.data)));
+        density->insertMeta("brume:data_note", openvdb::StringMetadata(coverage.note));
+        grids.push_back(density);
         if (temperature) grids.push_back(gridOf(temperature->at(t), "temperature"));
         const std::string path = prefix + name;
         const std::string part = path + ".part";  // a file half written is never taken for a whole one
@@ -122,10 +168,10 @@ int run(int argc, char** argv) {
     }
     std::vector<std::string> command(argv, argv + argc);
     command[0] = programName();
-    std::printf("# %s\n# '%s' (%s) of %s from its %s\n"
+    std::printf("# %s\n# '%s' (%s) of %s from its %s\n# data: %s\n"
                 "# extinction per unit (at 633 nm), albedo and g: soot scatters about a fifth of what it takes, forward\n",
                 commandLine(command).c_str(), o.quantity.c_str(),
-                quantity.units().c_str(), smvPath.c_str(), quantity.source().c_str());
+                quantity.units().c_str(), smvPath.c_str(), quantity.source().c_str(), coverage.note.c_str());
     // Soot (its mass or its extinction): FDS's K is for 633 nm, and soot's grows toward the blue.
     const bool soot = !o.grey && (quantity.units() == "kg/m3" || quantity.units() == "1/m");
     std::printf("void smoke %s\n%zu%s%s", prefix.substr(prefix.find_last_of('/') + 1).c_str(),

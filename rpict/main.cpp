@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "integrator/render_options.h"
+#include "medium/smoke.h"
 #include "render/camera_path.h"
 #include "render/frame_output.h"
 #include "render/picture_options.h"
@@ -103,7 +104,9 @@ class Rpict {
 public:
     Rpict(const Options& o, const Scene& scene, std::vector<std::string> command)
         : o_(o), scene_(scene), renderScene_(scene, o.render.materials), command_(std::move(command)),
-          progress_("rpict", o.reportInterval), sequence_(scene, renderScene_, o.render) {}
+          progress_("rpict", o.reportInterval), sequence_(scene, renderScene_, o.render) {
+        for (const std::string& w : noDataWarnings(renderScene_.smoke())) warn(w);
+    }
 
     void render(const SequenceFrame& f) {
         f.view.validate();

@@ -99,6 +99,7 @@ int run(int argc, char** argv) {
     RenderScene renderScene(scene, o.render.materials);
     const double instant = o.render.time.value_or(0);
     checkInstants(renderScene.smoke(), {&instant, 1});
+    for (const std::string& w : noDataWarnings(renderScene.smoke())) warn(w);
     Sequence sequence(scene, renderScene, o.render);
     const Integrator& integrator = sequence.integrator();
     ValueWriter writer(stdout, o.outputSpec, o.outFormat, scene, o.color);

@@ -73,6 +73,8 @@ OptionTable makeTable(Options& o) {
     addRealOption(t, "-vl", o.criteria.minimumLevel, "the visibility level a visible sign reaches");
     addRealOption(t, "-va", o.criteria.observer.age, "the observer's age (years, 23-75)");
     addRealOption(t, "-vt", o.criteria.observer.seconds, "the observation time (s)");
+    addRealOption(t, "-vc", o.criteria.minimumCoverage,
+                  "the share of a line with smoke data below which no sign is called visible (0: the rest clear air)");
     t.add("-vk", 1, "the K of Jin's law: 633 (soot's at 633 nm, as FDS's VISIBILITY; default) or photopic",
           [&o](const auto& a) {
               if (a[0] == "633") o.quoted = QuotedExtinction::At633nm;
@@ -152,7 +154,7 @@ double standardError(double sum, double squares, int n) {
 void writeCsvHead() {
     std::printf("instant_s,observer,x,y,z,sign,kind,distance_m,sign_cd_m2,background_cd_m2,contrast,size_arcmin,"
                 "threshold_cd_m2,visibility_level,verdict,seen_share,optical_depth,mean_extinction_1_m,jin_distance_m,"
-                "jin_verdict,visibility_level_se,extinction_quoted\n");
+                "jin_verdict,visibility_level_se,extinction_quoted,data_share\n");
 }
 
 // The K the optical depth and Jin's columns quote (-vk).
@@ -160,12 +162,13 @@ const char* quotedName(QuotedExtinction quoted) { return quoted == QuotedExtinct
 
 void writeCsvRow(double t, const Observer& o, const Sign& s, const SightMeasure& m, const SightJudgement& j,
                  QuotedExtinction quoted) {
-    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s,%.3g,%s\n",
+    std::printf("%.10g,%s,%.10g,%.10g,%.10g,%s,%s,%.4g,%.5g,%.5g,%.4g,%.4g,%.4g,%.4g,%s,%.3g,%.4g,%.4g,%.4g,%s,%.3g,%s,%.3g\n",
                 t, o.name.c_str(),
                 o.eye.x, o.eye.y, o.eye.z, s.name.c_str(), s.kind == SignKind::Emitting ? "emitting" : "reflecting",
                 m.distance, m.signLuminance, m.backgroundLuminance, j.contrast, j.angularSize, j.threshold,
                 j.visibilityLevel, verdictName(j.verdict), m.seenShare, m.opticalDepth, j.meanExtinction,
-                j.jinDistance, j.jinVisible ? "visible" : "not-visible", j.levelError, quotedName(quoted));
+                j.jinDistance, j.jinVisible ? "visible" : j.jinNoData ? "no-data" : "not-visible", j.levelError,
+                quotedName(quoted), m.coverage);
 }
 
 // A map over the grid's cells, one value per observer (the same in R, G and B: a data picture for falsecolor).
@@ -221,7 +224,7 @@ void addTo(std::vector<Tally>& tallies, const std::vector<size_t>& traced, const
 
 
 
-SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, double opticalDepth) {
+SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, double opticalDepth, double coverage) {
     SightMeasure m;
     const dvec3 toEye = observer.eye - sign.centre;
     m.distance = glm::length(toEye);
@@ -234,6 +237,7 @@ SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t,
     // A sign small beside its distance: its area times the cosine over the distance squared.
     m.solidAngle = m.facing ? sign.shape.area * glm::dot(sign.shape.normal, toEye) / std::pow(m.distance, 3) : 0;
     m.opticalDepth = opticalDepth;
+    m.coverage = coverage;
     return m;
 }
 
@@ -259,6 +263,8 @@ int run(int argc, char** argv) {
     if (o.signs.empty()) throw UsageError("no signs (-S)", kUsage);
     if (o.rays < 1) throw UsageError("-vr: at least one ray", kUsage);
     if (o.passes < 1) throw UsageError("-vp: at least one pass", kUsage);
+    if (!(o.criteria.minimumCoverage >= 0 && o.criteria.minimumCoverage <= 1))
+        throw UsageError("-vc: a share, from 0 to 1", kUsage);
     if (!o.prefix.empty() && o.grid.empty()) throw UsageError("-o: maps need observers on a grid (-g)", kUsage);
     if (o.grid.empty() == o.waypoints.empty()) throw UsageError("give observers either on a grid (-g) or at waypoints (-wp)", kUsage);
     std::optional<ObserverGrid> grid;
@@ -270,6 +276,7 @@ int run(int argc, char** argv) {
     std::vector<double> instants = o.instants.empty() ? std::vector<double>{0} : o.instants;
     RenderScene renderScene(scene, o.render.materials);
     checkInstants(renderScene.smoke(), instants);
+    for (const std::string& w : noDataWarnings(renderScene.smoke())) warn(w);
     Sequence sequence(scene, renderScene, o.render);
     const Integrator& integrator = sequence.integrator();
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(o.program.threads));
@@ -286,7 +293,7 @@ int run(int argc, char** argv) {
         std::vector<Tally> tallies(pairs);
         std::vector<SightMeasure> measures(pairs);
         std::vector<SightJudgement> judgements(pairs);
-        std::vector<double> depths(pairs);  // once the first pass has prepared the smoke at t
+        std::vector<double> depths(pairs), coverage(pairs);  // once the first pass has prepared the smoke at t
         std::vector<bool> inPass(pairs, true);  // the sight lines the pass traces rays for
         std::vector<size_t> traced(rays.size());
         std::iota(traced.begin(), traced.end(), size_t(0));
@@ -303,8 +310,11 @@ int run(int argc, char** argv) {
                 if (!inPass[pair]) continue;
                 const Sign& sign = signs[pair % signs.size()].sign;
                 const Observer& observer = observers[pair / signs.size()];
-                if (pass == 0) depths[pair] = integrator.quotedDepthBetween(observer.eye, sign.centre, t, o.quoted);
-                measures[pair] = measure(observer, sign, tallies[pair], depths[pair]);
+                if (pass == 0) {
+                    depths[pair] = integrator.quotedDepthBetween(observer.eye, sign.centre, t, o.quoted);
+                    coverage[pair] = integrator.dataCoverageBetween(observer.eye, sign.centre, t);
+                }
+                measures[pair] = measure(observer, sign, tallies[pair], depths[pair], coverage[pair]);
                 judgements[pair] = judge(measures[pair], sign.jinConstant, o.criteria);
                 inPass[pair] = pass + 1 < o.passes && uncertain(judgements[pair], o.criteria);
             }
@@ -314,15 +324,20 @@ int run(int argc, char** argv) {
         for (size_t pair = 0; pair < pairs; ++pair) {
             const SightJudgement& j = judgements[pair];
             writeCsvRow(t, observers[pair / signs.size()], signs[pair % signs.size()].sign, measures[pair], j, o.quoted);
-            levels[pair] = j.verdict == Verdict::Hidden || j.verdict == Verdict::Behind ? 0 : j.visibilityLevel;
+            levels[pair] = j.verdict == Verdict::Visible || j.verdict == Verdict::BelowThreshold ? j.visibilityLevel : 0;
             endurance.add(pair, t, j);
         }
         std::fflush(stdout);
         char suffix[64];
         std::snprintf(suffix, sizeof suffix, "_%g.hdr", t);
-        if (!o.prefix.empty())
-            writeMaps(o.prefix, *grid, observers, signs, suffix, "visibility level at t = " + std::to_string(t) + " s (0: hidden)",
-                      [&](size_t pair) { return levels[pair]; }, command);
+        if (o.prefix.empty()) continue;
+        writeMaps(o.prefix, *grid, observers, signs, suffix,
+                  "visibility level at t = " + std::to_string(t) + " s (0: hidden, behind or no data)",
+                  [&](size_t pair) { return levels[pair]; }, command);
+        if (std::any_of(coverage.begin(), coverage.end(), [](double c) { return c < 1; }))
+            writeMaps(o.prefix, *grid, observers, signs, "_data" + std::string(suffix),
+                      "share of the line with smoke data at t = " + std::to_string(t) + " s",
+                      [&](size_t pair) { return coverage[pair]; }, command);
     }
     progress.finish();
     if (!o.prefix.empty()) {

@@ -68,7 +68,41 @@ std::function<bool(double)> framesAround(const std::vector<double>& instants, co
 
 }  // namespace
 
-FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants) {
+namespace {
+
+std::string metres(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g m", x);
+    return text;
+}
+
+// The quantity's value per unit of a slice's quantity `from`, to fill a layer with: 1 for the quantity itself,
+// else between soot's density, extinction coefficient and optical density (K = ln 10 × OD = K_m × ρ); none for
+// anything else.
+std::optional<double> layerScale(const std::string& quantity, const std::string& from, double massExtinction) {
+    if (from == quantity) return 1.0;
+    auto perExtinction = [&](const std::string& q) -> std::optional<double> {  // K per unit of q
+        if (q == "SOOT EXTINCTION COEFFICIENT" || q == "EXTINCTION COEFFICIENT") return 1.0;
+        if (q == "SOOT OPTICAL DENSITY" || q == "OPTICAL DENSITY") return std::log(10.0);
+        if (q == "SOOT DENSITY") return massExtinction;
+        return std::nullopt;
+    };
+    std::optional<double> target = perExtinction(quantity), source = perExtinction(from);
+    if (!target || !source) return std::nullopt;
+    return *source / *target;
+}
+
+// The height of a horizontal slice's plane: its cells' centres (cell-centred) or its nodes.
+double planeHeight(const SmvIndex& smv, const FdsFile& f) {
+    const std::vector<double>& z = smv.meshes[size_t(f.mesh)].nodes[2];
+    const size_t k = size_t(f.range[4]);
+    return f.cellCentred && k > 0 ? 0.5 * (z[k - 1] + z[k]) : z[k];
+}
+
+}  // namespace
+
+FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants,
+                         const std::optional<SliceLayer>& layer) {
     auto volumeSlice = [&](const FdsFile& f) {
         return f.kind == FdsFile::Kind::Slice && f.cellCentred && f.volume() && f.quantity == quantity;
     };
@@ -80,49 +114,95 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
                   std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
                       return smoke3d(f) && fileExists(f.path);
                   });
-    if (!slices && !soot3d) {
+    source_ = slices ? "cell-centred 3D slices" : soot3d ? "3D smoke files (8-bit opacities)" : "";
+    const size_t meshCount = smv.meshes.size();
+    meshSources_.assign(meshCount, MeshSource::None);
+    meshNotes_.assign(meshCount, "");
+    std::vector<std::string> absent(meshCount);  // a file of the mesh listed in the index, not there
+    std::vector<const FdsFile*> chosen;           // one file per mesh
+    for (const FdsFile& f : smv.files) {
+        if (!(slices || soot3d) || !(slices ? volumeSlice(f) : smoke3d(f)) || meshSources_[size_t(f.mesh)] != MeshSource::None)
+            continue;
+        if (!fileExists(f.path)) {
+            absent[size_t(f.mesh)] = f.path;
+            continue;
+        }
+        chosen.push_back(&f);
+        meshSources_[size_t(f.mesh)] = MeshSource::Volume;
+        meshNotes_[size_t(f.mesh)] = source_;
+    }
+    // The layer's slices: per mesh without 3D data, the horizontal one in the layer nearest its middle.
+    double massExtinction = kSootMassExtinction;
+    for (const FdsFile& f : smv.files)
+        if (f.kind == FdsFile::Kind::Smoke3d && f.quantity == "SOOT DENSITY" && f.massExtinction > 0)
+            massExtinction = f.massExtinction;
+    std::vector<std::pair<const FdsFile*, double>> layers(meshCount, {nullptr, 0.0});
+    if (layer)
+        for (const FdsFile& f : smv.files) {
+            const size_t m = size_t(f.mesh);
+            if (f.kind != FdsFile::Kind::Slice || meshSources_[m] != MeshSource::None || f.range[4] != f.range[5] ||
+                f.range[0] == f.range[1] || f.range[2] == f.range[3] || !fileExists(f.path))
+                continue;
+            std::optional<double> scale = layerScale(quantity, f.quantity, massExtinction);
+            const double z = planeHeight(smv, f), middle = 0.5 * (layer->lo + layer->hi);
+            if (!scale || z < layer->lo || z > layer->hi) continue;
+            if (!layers[m].first || std::abs(z - middle) < std::abs(planeHeight(smv, *layers[m].first) - middle))
+                layers[m] = {&f, *scale};
+        }
+    const bool anyLayer = std::any_of(layers.begin(), layers.end(), [](const auto& l) { return l.first != nullptr; });
+    if (chosen.empty() && !anyLayer) {
         std::string have;
         for (const FdsFile& f : smv.files)
             if ((f.kind == FdsFile::Kind::Smoke3d || (f.cellCentred && f.volume())) && fileExists(f.path) &&
                 have.find("'" + f.quantity + "'") == std::string::npos)
                 have += (have.empty() ? "" : ", ") + ("'" + f.quantity + "'");
         throw Error(smv.path + ": no cell-centred 3D slice" + (quantity == "SOOT DENSITY" ? " or 3D smoke file" : "") +
-                    " of '" + quantity + "' (the case has " + (have.empty() ? "none of either" : have) + ")");
+                    " of '" + quantity + "' (the case has " + (have.empty() ? "none of either" : have) + ")" +
+                    (layer ? ", nor a horizontal 2D slice of it (or of soot's extinction or optical density) within "
+                             "the layer's heights"
+                           : ""));
     }
-    source_ = slices ? "cell-centred 3D slices" : "3D smoke files (8-bit opacities)";
-    std::vector<bool> covered(smv.meshes.size());
-    std::vector<std::string> absent(smv.meshes.size());  // a file of the mesh listed in the index, not there
-    std::vector<const FdsFile*> chosen;                  // one file per mesh
-    for (const FdsFile& f : smv.files) {
-        if (!(slices ? volumeSlice(f) : smoke3d(f)) || covered[size_t(f.mesh)]) continue;
-        if (!fileExists(f.path)) {
-            absent[size_t(f.mesh)] = f.path;
-            continue;
-        }
-        chosen.push_back(&f);
-        covered[size_t(f.mesh)] = true;
+    if (!chosen.empty()) {
+        std::vector<int> meshes;
+        for (const FdsFile* f : chosen) meshes.push_back(f->mesh);
+        setLattice(smv, meshes, slices);
+    } else {
+        std::vector<int> meshes;
+        for (const auto& [f, scale] : layers)
+            if (f) meshes.push_back(f->mesh);
+        setLattice(smv, meshes, true);
     }
-    setLattice(smv, chosen, slices);
     for (const FdsFile* f : chosen) {
         if (slices) addSlice(smv, *f, instants);
         else addSmoke3d(smv, *f, instants);
         if (units_.empty()) units_ = f->units;
     }
-    for (size_t m = 0; m < covered.size(); ++m)
-        if (!covered[m])
+    for (const auto& [f, scale] : layers)  // only layers: soot's units, or the slices' own quantity's
+        if (units_.empty() && f)
+            units_ = quantity == "SOOT DENSITY" ? "kg/m3" : scale == 1 && f->quantity == quantity ? f->units : "1/m";
+    for (size_t m = 0; m < meshCount; ++m)
+        if (layers[m].first) {
+            meshNotes_[m] = addLayer(smv, *layers[m].first, *layer, layers[m].second, instants);
+            meshSources_[m] = MeshSource::Layer;
+        }
+    for (size_t m = 0; m < meshCount; ++m)
+        if (meshSources_[m] == MeshSource::None)
             warnings_.push_back(smv.path + ": mesh " + std::to_string(m + 1) + " (" + smv.meshes[m].id + ") has no " +
-                                source_ + " of '" + quantity + "'" +
+                                (source_.empty() ? "3D data" : source_) + " of '" + quantity + "'" +
                                 (absent[m].empty() ? "" : " (" + absent[m] + " is listed but absent)") +
-                                ": it is left empty");
+                                (layer ? " nor a horizontal slice within the layer" : "") +
+                                ": it has no data (not clear air: studies flag lines through it)" +
+                                (layer ? "" : "; -l z0,z1 fills it from a horizontal 2D slice, where the case has one"));
+    if (source_.empty()) source_ = "2D slices as a layer";
     if (units_ == "C") units_ = "K", offset_ = 273.15;
     times_ = meshes_.front().times;
     if (times_.empty()) throw Error(smv.path + ": the files of '" + quantity + "' hold no frames");
 }
 
-void FdsQuantity::setLattice(const SmvIndex& smv, const std::vector<const FdsFile*>& files, bool cells) {
+void FdsQuantity::setLattice(const SmvIndex& smv, const std::vector<int>& meshes, bool cells) {
     spacing_ = glm::dvec3(std::numeric_limits<double>::infinity());
-    for (const FdsFile* f : files) spacing_ = glm::min(spacing_, uniformSpacing(smv, f->mesh));
-    const FdsMesh& first = smv.meshes[size_t(files.front()->mesh)];
+    for (int m : meshes) spacing_ = glm::min(spacing_, uniformSpacing(smv, m));
+    const FdsMesh& first = smv.meshes[size_t(meshes.front())];
     origin_ = glm::dvec3(first.nodes[0][0], first.nodes[1][0], first.nodes[2][0]) + (cells ? 0.5 : 0.0) * spacing_;
 }
 
@@ -199,6 +279,66 @@ void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::v
         frames.values.push_back(std::move(nodes));
     }
     meshes_.push_back(std::move(frames));
+}
+
+std::string FdsQuantity::addLayer(const SmvIndex& smv, const FdsFile& f, const SliceLayer& layer, double scale,
+                                  const std::vector<double>& instants) {
+    SliceFile s = readSlice(f.path, framesAround(instants, f.path, [&](const Wanted& w) { readSlice(f.path, w); }));
+    if (s.range != f.range) throw Error(f.path + ": its index range is not the one " + smv.path + " lists");
+    if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
+    const FdsMesh& m = smv.meshes[size_t(f.mesh)];
+    const glm::ivec3 all(f.range[1] - f.range[0] + 1, f.range[3] - f.range[2] + 1, 1);
+    // The lattice's voxels whose centres lie in the mesh's box, between the layer's heights.
+    glm::dvec3 lo(m.nodes[0].front(), m.nodes[1].front(), std::max(m.nodes[2].front(), layer.lo));
+    glm::dvec3 hi(m.nodes[0].back(), m.nodes[1].back(), std::min(m.nodes[2].back(), layer.hi));
+    glm::ivec3 first(glm::ceil((lo - origin_) / spacing_ - 1e-6)), last(glm::floor((hi - origin_) / spacing_ + 1e-6));
+    MeshFrames frames;
+    frames.first = first;
+    frames.size = glm::max(last - first + 1, glm::ivec3(0));
+    // Each voxel's slice value: bilinear in plan between the slice's values (at its cells' centres, or its
+    // nodes), as a 3D slice's between voxel centres; constant beyond the outermost. A cell-centred slice's first
+    // value along x and y is a ghost cell outside the range (addSlice).
+    struct Bilinear {
+        size_t at[4];
+        float w[4];
+    };
+    std::vector<Bilinear> plan;
+    for (int j = 0; j < frames.size.y; ++j)
+        for (int i = 0; i < frames.size.x; ++i) {
+            int below[2];
+            double frac[2];
+            for (int a = 0; a < 2; ++a) {
+                const std::vector<double>& n = m.nodes[a];
+                const double x = origin_[a] + (a == 0 ? first.x + i : first.y + j) * spacing_[a];
+                const double d = (n.back() - n.front()) / double(n.size() - 1);
+                const int r0 = f.range[2 * a], count = f.range[2 * a + 1] - r0 + (f.cellCentred ? 0 : 1);
+                const double u = std::clamp((x - n.front()) / d - r0 - (f.cellCentred ? 0.5 : 0.0), 0.0, double(count - 1));
+                below[a] = std::min(int(u), std::max(0, count - 2));
+                frac[a] = u - below[a];
+                if (f.cellCentred) ++below[a];  // past the ghost
+            }
+            auto index = [&](int di, int dj) { return size_t(below[0] + di + all.x * (below[1] + dj)); };
+            const int nextX = all.x > (f.cellCentred ? 2 : 1), nextY = all.y > (f.cellCentred ? 2 : 1);
+            plan.push_back({{index(0, 0), index(nextX, 0), index(0, nextY), index(nextX, nextY)},
+                            {float((1 - frac[0]) * (1 - frac[1])), float(frac[0] * (1 - frac[1])),
+                             float((1 - frac[0]) * frac[1]), float(frac[0] * frac[1])}});
+        }
+    for (SliceFrame& frame : s.frames) {
+        frames.times.push_back(frame.time);
+        std::vector<float> voxels;
+        voxels.reserve(plan.size() * size_t(frames.size.z));
+        std::vector<float> layerValues;
+        for (const Bilinear& b : plan) {
+            double v = 0;
+            for (int c = 0; c < 4; ++c) v += b.w[c] * frame.values[b.at[c]];
+            layerValues.push_back(float(scale * v));
+        }
+        for (int k = 0; k < frames.size.z; ++k) voxels.insert(voxels.end(), layerValues.begin(), layerValues.end());
+        frames.values.push_back(std::move(voxels));
+    }
+    meshes_.push_back(std::move(frames));
+    return "the 2D slice '" + f.quantity + "' at z = " + metres(planeHeight(smv, f)) + " over z " + metres(lo.z) +
+           " to " + metres(hi.z);
 }
 
 LatticeVoxels FdsQuantity::at(double time) const {

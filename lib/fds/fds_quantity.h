@@ -4,6 +4,7 @@
 // 8-bit opacities: ±0.02 /m of extinction at 0.1 m cells, smoke_file.h).
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,15 @@ struct LatticeVoxels {
     std::vector<std::pair<glm::ivec3, float>> values;
 };
 
+// Meshes without 3D data filled from a horizontal 2D slice (FDSVisMap's assumption made explicit): the slice's
+// values, cell by cell in plan, over heights lo to hi of each such mesh.
+struct SliceLayer {
+    double lo = 0, hi = 0;  // metres
+};
+
+// What a mesh's values came from.
+enum class MeshSource { None, Volume, Layer };
+
 class FdsQuantity {
 public:
     // The meshes' files of `quantity` (a long label as the .smv has it, e.g. "SOOT DENSITY") in the index `smv`:
@@ -28,7 +38,12 @@ public:
     // voxels per cell. Throws Error "smv: …" where no file has the quantity (naming those that the case has),
     // meshes are not on one lattice (stretched cells, cells that are not multiples, meshes off the lattice), or
     // "file: …" where a file cannot be read or has no frames around an instant.
-    FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants = {});
+    // With `layer`, meshes without 3D data of the quantity take a horizontal 2D slice's over the layer's heights,
+    // from a slice of the quantity itself or of soot's extinction or optical density (K = ln 10 × the optical
+    // density; soot density = K over the mass extinction coefficient); Error where the case has 3D data in no
+    // mesh and no such slice either.
+    FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants = {},
+                const std::optional<SliceLayer>& layer = std::nullopt);
 
     // The instants of the first mesh's frames that were read (seconds): with instants given, only those around them.
     const std::vector<double>& times() const { return times_; }
@@ -38,6 +53,10 @@ public:
     // The units of the values (kg/m3, K, …) and where they came from, for headers and messages.
     const std::string& units() const { return units_; }
     const std::string& source() const { return source_; }
+    // Per mesh of the index: where its values came from, and in words (e.g. "3D smoke files (8-bit opacities)",
+    // "the 2D slice 'SOOT EXTINCTION COEFFICIENT' at z = 2.05 m over 1.5-2.5 m", "" where none).
+    const std::vector<MeshSource>& meshSources() const { return meshSources_; }
+    const std::vector<std::string>& meshSourceNotes() const { return meshNotes_; }
     // What the caller should tell the user (meshes without the quantity, a truncated file, …).
     const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -51,9 +70,14 @@ private:
     using Wanted = std::function<bool(double)>;
     void addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
     void addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
-    // The lattice: the finest cells of the meshes read, aligned with the first one's (its cell centres, or its
-    // nodes for 3D smoke files, `cells` false).
-    void setLattice(const SmvIndex& smv, const std::vector<const FdsFile*>& files, bool cells);
+    // The slice `f` (horizontal, of a mesh without 3D data) over the layer's heights of its mesh, its values
+    // times `scale`, onto the lattice's voxels whose centres lie in the mesh's box and the layer. Returns what
+    // it did, in words.
+    std::string addLayer(const SmvIndex& smv, const FdsFile& f, const SliceLayer& layer, double scale,
+                         const std::vector<double>& instants);
+    // The lattice: the finest cells of `meshes`, aligned with the first one's (its cell centres, or its nodes for
+    // 3D smoke files, `cells` false).
+    void setLattice(const SmvIndex& smv, const std::vector<int>& meshes, bool cells);
     // How many lattice voxels a mesh's value fills along each axis; Error unless whole numbers (1 for nodes).
     glm::ivec3 refinement(const SmvIndex& smv, int mesh, bool cells) const;
     // The lattice index of world point p, which must be a voxel centre.
@@ -65,6 +89,8 @@ private:
     std::string units_, source_;
     double offset_ = 0;  // added to every value: 273.15 for °C
     std::vector<std::string> warnings_;
+    std::vector<MeshSource> meshSources_;
+    std::vector<std::string> meshNotes_;
 };
 
 }  // namespace brume

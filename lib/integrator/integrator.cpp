@@ -325,4 +325,10 @@ double Integrator::quotedDepthBetween(const dvec3& from, const dvec3& to, double
     return media_.smokeAt(time).quotedDepth(line, 0, distance, media_.homogeneousAlong(line, nullptr, PathState{}), quoted);
 }
 
+double Integrator::dataCoverageBetween(const dvec3& from, const dvec3& to, double time) const {
+    double distance = glm::length(to - from);
+    if (!media_.present() || !(distance > 0)) return 1;
+    return 1 - std::min(1.0, media_.smokeAt(time).uncoveredLength(Ray(from, (to - from) / distance), 0, distance) / distance);
+}
+
 }  // namespace brume

@@ -6,12 +6,26 @@
 #include <limits>
 #include <span>
 
+#include "util/error.h"
+
 namespace brume {
 
-DensityGrid::DensityGrid(std::shared_ptr<const VoxelGrid> voxels)
+namespace {
+DataCoverage coverageOf(const VoxelGrid& voxels, const std::string& source) {
+    try {
+        return DataCoverage::parse(voxels.metadata("brume:domain"), voxels.metadata("brume:data"),
+                                   voxels.metadata("brume:data_note"));
+    } catch (const Error& e) {
+        throw Error(source + ": " + e.what());
+    }
+}
+}  // namespace
+
+DensityGrid::DensityGrid(std::shared_ptr<const VoxelGrid> voxels, const std::string& source)
     : voxels_(std::move(voxels)),
       bounds_(voxels_->bounds()),
-      indexFromWorld_(glm::inverse(voxels_->worldFromIndex())) {}
+      indexFromWorld_(glm::inverse(voxels_->worldFromIndex())),
+      coverage_(coverageOf(*voxels_, source)) {}
 
 namespace {
 

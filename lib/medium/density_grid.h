@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "geometry/ray.h"
+#include "medium/data_coverage.h"
 #include "medium/density_profile.h"
 #include "medium/voxel_grid.h"
 
@@ -26,8 +27,9 @@ public:
     // The float grid `name` of the .vdb file `path`. Errors are "path: what" and list the file's grids
     // when `name` is not one of them.
     explicit DensityGrid(const std::string& path, const std::string& name = "density")
-        : DensityGrid(readVoxelGrid(path, name)) {}
-    explicit DensityGrid(std::shared_ptr<const VoxelGrid> voxels);
+        : DensityGrid(readVoxelGrid(path, name), path) {}
+    // `source` names the grid in messages ("source: brume:data: …" where its coverage is malformed).
+    explicit DensityGrid(std::shared_ptr<const VoxelGrid> voxels, const std::string& source = "grid");
 
     // Where the density can be non-zero: trilinear interpolation reaches one voxel beyond the centres of
     // the outermost active voxels (tiles included). Empty for an empty grid.
@@ -49,6 +51,8 @@ public:
     std::uint64_t memoryBytes() const { return voxels_->memoryBytes(); }
 
     const VoxelGrid& voxels() const { return *voxels_; }
+    // Where a simulation's domain has data, from the grid's metadata (DataCoverage); no domain without it.
+    const DataCoverage& coverage() const { return coverage_; }
 
 private:
     template <class F>
@@ -57,6 +61,7 @@ private:
     std::shared_ptr<const VoxelGrid> voxels_;
     Bounds3 bounds_;  // the voxels' (computed once: it maps the index box's corners to the world)
     glm::dmat4 indexFromWorld_;
+    DataCoverage coverage_;
 };
 
 }  // namespace brume

@@ -51,6 +51,12 @@ MajorantGrid GridSequence::boundsAt(double time, int voxelsPerCell) const {
     return MajorantGrid(grids, voxelsPerCell, weights);
 }
 
+double GridSequence::uncoveredLength(const Ray& ray, double t0, double t1, double time) const {
+    const Blend b = blendAt(time);
+    return std::max(frames_[b.before].grid.coverage().uncoveredLength(ray, t0, t1),
+                    frames_[b.later].grid.coverage().uncoveredLength(ray, t0, t1));
+}
+
 Bounds3 GridSequence::bounds() const {
     Bounds3 b;
     for (const KeyFrame& frame : frames_) b.include(frame.grid.bounds());

@@ -28,6 +28,9 @@ public:
     DensityProfile profile(const Ray& ray, double t0, double t1, double time) const;
     // Where any frame's density can be non-zero.
     Bounds3 bounds() const;
+    // The length of [t0, t1] along the ray in the domain of a simulation and without its data at `time`: the
+    // longer of the two key frames' around it (DataCoverage).
+    double uncoveredLength(const Ray& ray, double t0, double t1, double time) const;
     // Bounds the density at every time in [t0, t1]: the majorants of the key frames from the last at or
     // before t0 to the first at or after t1 (linear interpolation never exceeds its two ends). Built on
     // each call (a pass over those frames' active voxels): keep it for the frame or interval it serves.

@@ -182,6 +182,12 @@ double ParticipatingMedia::quotedDepth(const Ray& ray, double start, double end,
     return depth;
 }
 
+double ParticipatingMedia::uncoveredLength(const Ray& ray, double start, double end) const {
+    double most = 0;
+    for (const SmokeVolume& v : smoke_) most = std::max(most, v.uncoveredLength(ray, start, end));
+    return most;
+}
+
 bool ParticipatingMedia::smokeAlong(const Ray& ray, double start, double end) const {
     return std::any_of(smoke_.begin(), smoke_.end(),
                        [&](const SmokeVolume& v) { return crosses(v.bounds(), ray, start, end); });

@@ -67,6 +67,9 @@ public:
     // ∫K dt between start and end through `h` and the smoke, K each one's as a study quotes one number
     // (QuotedExtinction; the homogeneous medium's photopic mean): the optical depth of a line of sight.
     double quotedDepth(const Ray& ray, double start, double end, const HomogeneousMedium& h, QuotedExtinction quoted) const;
+    // The length of [start, end] through a simulation's domain where the smoke has no data (the longest of the
+    // smokes', SmokeVolume::uncoveredLength).
+    double uncoveredLength(const Ray& ray, double start, double end) const;
     // exp(−∫σ_t) of the smoke between start and end (SmokeVolume::transmittance: exact, no noise).
     Spectrum smokeTransmittance(const Ray& ray, double start, double end) const;
     // The same through `h` and the smoke (`h` in closed form).

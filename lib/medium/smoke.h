@@ -50,6 +50,11 @@ SmokeDescription readSmoke(const SceneObject& object);
 // soot is not to stand in for it. Programs call it before they write anything; SmokeVolume checks its own.
 void checkInstants(const std::vector<SmokeDescription>& smoke, std::span<const double> times);
 
+// What programs tell the user of smoke whose simulation's domain has no data in part (DataCoverage): one
+// message per such smoke object ("file:line: smoke 'name': …"), saying what the data are and that rays cross
+// the rest as clear air. Empty where every smoke is whole, or claims no domain.
+std::vector<std::string> noDataWarnings(const std::vector<SmokeDescription>& smoke);
+
 // The smoke at one instant of the scene: what rays are tracked through. Thread-safe const members.
 class SmokeVolume {
 public:
@@ -73,6 +78,11 @@ public:
     const Spectrum& extinctionPerDensity() const { return description_.extinctionPerDensity; }
     // The one K per unit density a study quotes (QuotedExtinction).
     double quotedExtinctionPerDensity(QuotedExtinction quoted) const;
+    // The length of [tmin, tmax] along the ray through the domain of the simulation the smoke comes from where
+    // it has no data (GridSequence::uncoveredLength): smoke no one knows, which rays cross as clear air.
+    double uncoveredLength(const Ray& ray, double tmin, double tmax) const {
+        return description_.frames->uncoveredLength(ray, tmin, tmax, time_);
+    }
     // ∫ density dt between tmin and tmax, exactly (as transmittance() finds it).
     double densityIntegral(const Ray& ray, double tmin, double tmax) const;
     const Spectrum& albedo() const { return description_.albedo; }

@@ -45,6 +45,8 @@ public:
     // For each cell between voxel centres (its lowest corner's index), the 8 voxels at its corners:
     // corners[8n + i + 2j + 4k] the value at cells[n] + (i, j, k), as density() interpolates them.
     virtual void cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const = 0;
+    // The grid's string metadata `key`, empty where it has none.
+    virtual std::string metadata(const std::string& key) const = 0;
 };
 
 // The float grid `name` of the .vdb file `path` (see DensityGrid), through the OpenVDB module. Throws Error

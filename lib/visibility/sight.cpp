@@ -11,6 +11,7 @@ const char* verdictName(Verdict v) {
         case Verdict::BelowThreshold: return "below-threshold";
         case Verdict::Hidden: return "hidden";
         case Verdict::Behind: return "behind";
+        case Verdict::NoData: return "no-data";
     }
     return "";
 }
@@ -20,7 +21,10 @@ SightJudgement judge(const SightMeasure& m, double jinConstant, const Visibility
     j.meanExtinction = m.distance > 0 ? m.opticalDepth / m.distance : 0;
     j.jinDistance = m.opticalDepth > 0 ? jinConstant * m.distance / m.opticalDepth : std::numeric_limits<double>::infinity();
     // Jin's law sees walls too: only the light is left out.
+    const bool known = m.coverage >= criteria.minimumCoverage;
     j.jinVisible = m.facing && m.seenShare >= criteria.minimumSeenShare && m.opticalDepth <= jinConstant;
+    j.jinNoData = j.jinVisible && !known;
+    j.jinVisible = j.jinVisible && known;
     if (!m.facing) {
         j.verdict = Verdict::Behind;
         return j;
@@ -33,7 +37,8 @@ SightJudgement judge(const SightMeasure& m, double jinConstant, const Visibility
     j.visibilityLevel = j.threshold > 0 ? std::abs(difference) / j.threshold : 0;
     j.levelError = j.threshold > 0 ? std::hypot(m.signError, m.backgroundError) / j.threshold : 0;
     if (m.seenShare < criteria.minimumSeenShare) j.verdict = Verdict::Hidden;
-    else j.verdict = j.visibilityLevel >= criteria.minimumLevel ? Verdict::Visible : Verdict::BelowThreshold;
+    else if (j.visibilityLevel < criteria.minimumLevel) j.verdict = Verdict::BelowThreshold;
+    else j.verdict = known ? Verdict::Visible : Verdict::NoData;
     return j;
 }
 

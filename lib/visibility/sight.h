@@ -18,6 +18,8 @@ struct SightMeasure {
     double seenShare = 0;            // the share of the sign's rays that met the sign (the rest met something before)
     double solidAngle = 0;           // sr, of the sign from the eye (projected, its far side hidden)
     double opticalDepth = 0;         // ∫K along the line to the sign's centre
+    double coverage = 1;             // the share of that line where the smoke has data (DataCoverage): the rest
+                                     // lies in its simulation's domain, without data, and adds nothing to ∫K
     bool facing = true;              // the eye is on the sign's front side
 };
 
@@ -25,10 +27,14 @@ struct VisibilityCriteria {
     AdrianObserver observer;
     double minimumLevel = 1;     // the visibility level (ΔL / ΔL_threshold) a sign must reach
     double minimumSeenShare = 0.5;  // of the sign's area left unhidden by walls or furniture
+    // A sign is not called visible (by either criterion) along a line with less of it with data: what is
+    // missing would only add smoke. 0: the rest taken for clear air.
+    double minimumCoverage = 0.5;
 };
 
-enum class Verdict { Visible, BelowThreshold, Hidden, Behind };
-const char* verdictName(Verdict v);  // "visible", "below-threshold", "hidden", "behind"
+// NoData: the sign would be visible if the line's stretch without data were clear air, which no one knows.
+enum class Verdict { Visible, BelowThreshold, Hidden, Behind, NoData };
+const char* verdictName(Verdict v);  // "visible", "below-threshold", "hidden", "behind", "no-data"
 
 struct SightJudgement {
     double contrast = 0;             // (L_sign − L_background) / L_background
@@ -39,7 +45,9 @@ struct SightJudgement {
     Verdict verdict = Verdict::Hidden;
     double meanExtinction = 0;       // 1/m: the optical depth over the distance
     double jinDistance = 0;          // m: Jin's S = C / K with K that mean (infinite in clear air)
-    bool jinVisible = false;         // S ≥ the distance (optical depth ≤ C), on the sign's front, not hidden
+    bool jinVisible = false;         // S ≥ the distance (optical depth ≤ C), on the sign's front, not hidden,
+                                     // with data enough
+    bool jinNoData = false;          // visible by Jin's law but for the line's stretch without data
 };
 
 SightJudgement judge(const SightMeasure& m, double jinConstant, const VisibilityCriteria& criteria);

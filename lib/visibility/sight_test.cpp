@@ -65,5 +65,28 @@ TEST(Sight, VisibilityLevelIsTheDifferenceOverAdriansThreshold) {
     EXPECT_STREQ(verdictName(Verdict::BelowThreshold), "below-threshold");
 }
 
+// A line mostly through a simulation's domain without data: what is missing can only add smoke, so a sign seen
+// along it is "no data", one not seen stays not seen; -vc 0 takes the rest for clear air.
+TEST(Sight, ALineMostlyWithoutDataIsNotCalledVisible) {
+    VisibilityCriteria c;
+    SightMeasure m = measure(150, 20, 5, 0.5);
+    m.coverage = 0.3;
+    SightJudgement j = judge(m, 8, c);
+    EXPECT_EQ(j.verdict, Verdict::NoData);
+    EXPECT_FALSE(j.jinVisible);
+    EXPECT_TRUE(j.jinNoData);
+    EXPECT_STREQ(verdictName(j.verdict), "no-data");
+    SightMeasure faint = measure(20.01, 20, 5, 20);
+    faint.coverage = 0.3;
+    EXPECT_EQ(judge(faint, 8, c).verdict, Verdict::BelowThreshold);
+    EXPECT_FALSE(judge(faint, 8, c).jinNoData);  // 20 > C already
+    m.coverage = 0.5;  // half the line known: as the criterion says
+    EXPECT_EQ(judge(m, 8, c).verdict, Verdict::Visible);
+    m.coverage = 0;
+    c.minimumCoverage = 0;
+    EXPECT_EQ(judge(m, 8, c).verdict, Verdict::Visible);
+    EXPECT_TRUE(judge(m, 8, c).jinVisible);
+}
+
 }  // namespace
 }  // namespace brume

@@ -1,5 +1,7 @@
 #include "visibility/sign.h"
 
+#include "sampling/polygon_points.h"
+
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -56,20 +58,6 @@ Sign signFromScene(const Scene& scene, const std::string& name, SignKind kind, d
     return sign;
 }
 
-dvec3 pointOnPolygon(const Polygon& p, double u, double v) {
-    double share = u * p.area;
-    size_t last = p.triangles.size() - 1, t = 0;
-    for (; t < last; ++t) {
-        double a = triangleArea(p, p.triangles[t]);
-        if (share < a) break;
-        share -= a;
-    }
-    const auto& tri = p.triangles[t];
-    double s = std::sqrt(std::min(1.0, share / triangleArea(p, tri))), w = v;
-    const dvec3 &a = p.vertices[tri[0]], &b = p.vertices[tri[1]], &c = p.vertices[tri[2]];
-    return a + s * ((1 - w) * (b - a) + w * (c - a));
-}
-
 bool insidePolygon(const Polygon& p, const dvec3& q) {
     for (const auto& t : p.triangles) {
         const dvec3 &a = p.vertices[t[0]], &b = p.vertices[t[1]], &c = p.vertices[t[2]];
@@ -83,10 +71,11 @@ bool insidePolygon(const Polygon& p, const dvec3& q) {
 
 std::vector<dvec3> pointsOnSign(const Sign& sign, int n) {
     std::vector<dvec3> points;
+    PolygonPoints area(sign.shape);
     for (int i = 0; i < n; ++i) {
         double u, v;
         latticePoint(i, n, u, v);
-        points.push_back(pointOnPolygon(sign.shape, u, v));
+        points.push_back(area.at(v, u));
     }
     return points;
 }
@@ -99,10 +88,11 @@ std::vector<dvec3> pointsAroundSign(const Sign& sign, int n, double grow) {
     // Taking all of them (not the first n) keeps them spread over the whole band.
     const int m = int(std::ceil(n / (1 - 1 / (grow * grow))));
     std::vector<dvec3> points;
+    PolygonPoints area(grown);
     for (int i = 0; i < m; ++i) {
         double u, v;
         latticePoint(i, m, u, v);
-        dvec3 p = pointOnPolygon(grown, u, v);
+        dvec3 p = area.at(v, u);
         if (!insidePolygon(sign.shape, p)) points.push_back(p);
     }
     return points;

@@ -29,16 +29,14 @@ double jinConstant(SignKind kind);
 // or it has no area.
 Sign signFromScene(const Scene& scene, const std::string& name, SignKind kind, double jinConstant);
 
-// `n` points spread evenly over the sign's area (a rank-1 lattice folded onto its triangles by area): the
+// `n` points spread evenly over the sign's area (a rank-1 lattice folded onto its triangles by area,
+// PolygonPoints, the triangle picked by the lattice's irrational coordinate: never a corner, even for n = 1): the
 // same points for every observer, a quadrature of the sign's luminance.
 std::vector<dvec3> pointsOnSign(const Sign& sign, int n);
 // About `n` points spread evenly over the band around the sign: its polygon grown by `grow` about its centre,
 // the sign itself left out.
 std::vector<dvec3> pointsAroundSign(const Sign& sign, int n, double grow = 1.5);
 
-// Where a point (u, v) of the unit square lands on the polygon, uniform by area: triangles chosen by u,
-// u rescaled inside its triangle's share, the triangle's square-root map.
-dvec3 pointOnPolygon(const Polygon& polygon, double u, double v);
 // Whether p (on the polygon's plane) lies inside it.
 bool insidePolygon(const Polygon& polygon, const dvec3& p);
 

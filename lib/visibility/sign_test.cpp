@@ -2,56 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
-
-#include "geometry/polygon.h"
 #include "scene_text.h"
 #include "util/error.h"
 
 namespace brume {
 namespace {
-
-Polygon polygon(std::vector<dvec3> vertices) {
-    std::string why;
-    Polygon p = *makePolygon(std::move(vertices), why);
-    p.triangles = triangulate(p);
-    return p;
-}
-
-// An L-shaped (concave) polygon in the plane z = 1: three unit squares.
-Polygon lShape() { return polygon({{0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}}); }
-
-// Draws from uniform (u, v) against the uniform density over the polygon: a chi-square over the 27 cells of
-// a third of a unit that the L covers (cells of its bounding square outside it must stay empty).
-TEST(Sign, PointsOnAPolygonAreUniformByArea) {
-    Polygon p = lShape();
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> u01(0, 1);
-    const int cells = 6, draws = 270000;
-    std::vector<int> count(cells * cells);
-    for (int i = 0; i < draws; ++i) {
-        dvec3 q = pointOnPolygon(p, u01(rng), u01(rng));
-        ASSERT_NEAR(q.z, 1, 1e-12);
-        ASSERT_TRUE(insidePolygon(p, q)) << q.x << " " << q.y;
-        ++count[size_t(std::min(cells - 1, int(q.x * 3)) + cells * std::min(cells - 1, int(q.y * 3)))];
-    }
-    // 27 cells of 1/9 inside the L (area 3): each expects draws / 27.
-    double chi2 = 0, expected = draws / 27.0;
-    int inside = 0;
-    for (int j = 0; j < cells; ++j)
-        for (int i = 0; i < cells; ++i) {
-            bool in = i < 3 || j < 3;
-            if (!in) {
-                EXPECT_EQ(count[size_t(i + cells * j)], 0);
-                continue;
-            }
-            ++inside;
-            double d = count[size_t(i + cells * j)] - expected;
-            chi2 += d * d / expected;
-        }
-    EXPECT_EQ(inside, 27);
-    EXPECT_LT(chi2, 54.1);  // chi-square with 26 degrees of freedom: p = 0.001
-}
 
 TEST(Sign, LatticePointsCoverTheSignAndTheBandAroundIt) {
     const char* text = "void glow green 0 0 4 0 1 0 0\n"

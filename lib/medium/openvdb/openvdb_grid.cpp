@@ -177,4 +177,9 @@ void OpenVdbGrid::cellCorners(std::span<const glm::ivec3> cells, std::span<float
     }
 }
 
+std::string OpenVdbGrid::metadata(const std::string& key) const {
+    auto text = grid_->getMetadata<openvdb::StringMetadata>(key);
+    return text ? text->value() : std::string();
+}
+
 }  // namespace brume

@@ -34,6 +34,7 @@ public:
     void forEachActive(const std::function<void(const IndexBox&, float)>& visit) const override;
     float minimum(const IndexBox& box) const override;
     void cellCorners(std::span<const glm::ivec3> cells, std::span<float> corners) const override;
+    std::string metadata(const std::string& key) const override;
 
     const openvdb::FloatGrid& grid() const { return *grid_; }
 
