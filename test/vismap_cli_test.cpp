@@ -255,7 +255,8 @@ TEST_F(Vismap, MapsOverAGrid) {
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<Row> rows = csv(r.out);
     ASSERT_EQ(rows.size(), 32u);  // 16 cells, two instants
-    for (const char* name : {"map_sign_0.hdr", "map_sign_10.hdr", "map_sign_until.hdr", "map_sign_jin_until.hdr"}) {
+    for (const char* name : {"map_sign_0.hdr", "map_sign_10.hdr", "map_sign_until.hdr", "map_sign_jin_until.hdr",
+                             "map_any_until.hdr"}) {
         brume::Picture p = brume::readPicture((dir_ / name).string());
         ASSERT_EQ(p.width, 4) << name;
         ASSERT_EQ(p.height, 4) << name;
@@ -274,6 +275,46 @@ TEST_F(Vismap, MapsOverAGrid) {
     }
 }
 
+// Smoke that thickens linearly between key frames (density 1 at 10 s, 3 at 20 s, K .8 /m, 5 m from the sign):
+// the optical depth is 4 then 12, so Jin's S = 8/K reaches the distance at 15 s exactly, which the losses
+// interpolate from the two instants; the report's other files say the same.
+TEST_F(Vismap, LossesAreInterpolatedBetweenInstantsAndReported) {
+    namespace mt = brume::medium::testing;
+    mt::writeGrid(dir_ / "thin.vdb", mt::boxGrid({-4, -12, -2}, {24, 12, 12}, 1.0f, 0.5));
+    mt::writeGrid(dir_ / "thick.vdb", mt::boxGrid({-4, -12, -2}, {24, 12, 12}, 3.0f, 0.5));
+    std::ofstream(dir_ / "smoke.rad") << "void smoke s 4 10 thin.vdb 20 thick.vdb 0 3 .8 .8 .8\n";
+    waypoints("door 5 0 1.75\n");
+    Output r = run("vismap -S signs.txt -wp route.txt -T 10,20 -o study -ab 0 -vr 4 sign.rad smoke.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<Row> rows = csv(r.out);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_NEAR(number(rows[0], "optical_depth"), 4, 1e-3);
+    EXPECT_NEAR(number(rows[1], "optical_depth"), 12, 1e-3);
+    EXPECT_EQ(rows[1].at("jin_verdict"), "not-visible");
+    std::vector<Row> lost = csv(brume_test::slurp(dir_ / "study_lost.csv"));
+    ASSERT_EQ(lost.size(), 4u);  // light and Jin, for the sign and for any sign
+    for (const Row& l : lost) {
+        if (l.at("criterion") != "jin") continue;
+        EXPECT_EQ(l.at("how"), l.at("sign") == "sign" ? "interpolated" : "bracketed") << l.at("sign");
+        EXPECT_EQ(l.at("after_s"), "10");
+        EXPECT_EQ(l.at("before_s"), "20");
+        if (l.at("sign") == "sign") EXPECT_NEAR(number(l, "lost_s"), 15, 1e-3);
+    }
+    std::vector<Row> summary = csv(brume_test::slurp(dir_ / "study_summary.csv"));
+    ASSERT_EQ(summary.size(), 4u);  // two instants, the sign and any
+    EXPECT_EQ(summary[0].at("visible_jin"), "1");
+    EXPECT_EQ(summary[2].at("visible_jin"), "0");
+    const std::string json = brume_test::slurp(dir_ / "study.json");
+    EXPECT_NE(json.find("\"visibility_level\": 10"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"jin_C\": 8"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"version\": \"Brume "), std::string::npos) << json;
+    // Clear air: no Jin's distance (an empty field, not inf).
+    Output clear = run("vismap -S signs.txt -wp route.txt -ab 0 -vr 4 sign.rad");
+    ASSERT_EQ(clear.status, 0) << clear.err;
+    EXPECT_EQ(csv(clear.out)[0].at("jin_distance_m"), "");
+    EXPECT_EQ(clear.out.find("inf"), std::string::npos);
+}
+
 TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
     waypoints("a 2 0 1.75\n");
     auto error = [&](const std::string& options, const std::string& signs) {
@@ -289,8 +330,8 @@ TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
     r = error("-S bad_signs.txt -wp route.txt -g 0 0 1 1 1 1", "sign emitting\n");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("either on a grid (-g) or at waypoints (-wp)"), std::string::npos) << r.err;
-    r = error("-S bad_signs.txt -wp route.txt -o map", "sign emitting\n");
-    EXPECT_NE(r.err.find("-o: maps need observers on a grid (-g)"), std::string::npos) << r.err;
+    r = error("-S bad_signs.txt -wp route.txt -vc 1.5", "sign emitting\n");
+    EXPECT_NE(r.err.find("-vc: a share, from 0 to 1"), std::string::npos) << r.err;
     r = error("-S bad_signs.txt -wp route.txt -T 20,10", "sign emitting\n");
     EXPECT_NE(r.err.find("-T: instants must increase"), std::string::npos) << r.err;
     for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{

@@ -3,10 +3,14 @@
 
     plot_sight.py sight.csv [more.csv ...] -o plots.png
 
+    plot_sight.py sight.csv -o plots.png --level 4      # the criterion the study used (vismap -vl; default 10)
+
 Grid observers (cell_C_R): maps, one row per file and sign, one column per instant, each cell coloured by the
-sign's visibility level (log scale; white where the sign is hidden or seen from behind), outlined in black where
-it is visible by the light, crossed where Jin's law says otherwise. Waypoints: the contrast and the
-visibility level over time, one line per waypoint and sign.
+sign's visibility level (log scale; white where the sign is hidden or seen from behind, grey with "?" where the
+line lacks smoke data: vismap's no-data), outlined in black where it is visible by the light (level >= the
+criterion), crossed where Jin's law says otherwise. Waypoints: the contrast and the visibility level over time,
+one line per waypoint and sign, the criterion drawn. Empty fields of the CSV (no level where the sign is hidden
+or behind) are gaps.
 """
 import argparse
 import csv
@@ -19,6 +23,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.colors as colors  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def value(r, key):
+    """A number of the CSV, NaN where the field is empty (vismap leaves what is not there empty)."""
+    return float(r[key]) if r.get(key) else math.nan
 
 
 def rows_of(path):
@@ -37,7 +46,7 @@ def grid_panels(files):
     return panels
 
 
-def plot_maps(files, out):
+def plot_maps(files, out, level):
     panels = grid_panels(files)
     rows = sorted({(k[0], k[1]) for k in panels}, key=lambda k: (k[0], k[1]))
     instants = sorted({k[2] for k in panels})
@@ -55,25 +64,28 @@ def plot_maps(files, out):
             grid = [[math.nan] * len(xs) for _ in ys]
             for (x, y), r in cells.items():
                 seen = r["verdict"] in ("visible", "below-threshold")
-                grid[ys.index(y)][xs.index(x)] = max(float(r["visibility_level"]), 0.1) if seen else math.nan
+                grid[ys.index(y)][xs.index(x)] = max(value(r, "visibility_level"), 0.1) if seen else math.nan
             extent = (xs[0] - step / 2, xs[-1] + step / 2, ys[0] - step / 2, ys[-1] + step / 2)
             image = ax.imshow(grid, origin="lower", extent=extent, norm=norm, cmap="viridis")
             for (x, y), r in cells.items():
                 light = r["verdict"] == "visible"
                 if light:
                     ax.add_patch(plt.Rectangle((x - step / 2, y - step / 2), step, step, fill=False, lw=0.6))
-                if light != (r["jin_verdict"] == "visible"):
+                if r["verdict"] == "no-data":
+                    ax.add_patch(plt.Rectangle((x - step / 2, y - step / 2), step, step, color="0.8", lw=0))
+                    ax.text(x, y, "?", ha="center", va="center", fontsize=5)
+                elif light != (r["jin_verdict"] == "visible"):
                     ax.plot(x, y, "x", color="red", ms=4, mew=1)
             ax.set_title(f"{label}: {sign}, t = {t:g} s", fontsize=9)
             ax.set_xlabel("x (m)", fontsize=8)
             ax.set_ylabel("y (m)", fontsize=8)
             ax.tick_params(labelsize=7)
-    fig.colorbar(image, ax=axes, shrink=0.6, label="visibility level (Adrian); outlined: visible (>= -vl); "
-                                                   "x: Jin's law differs")
+    fig.colorbar(image, ax=axes, shrink=0.6, label=f"visibility level (Adrian); outlined: visible (>= {level:g}); "
+                                                   "x: Jin's law differs; ?: no smoke data")
     fig.savefig(out, dpi=110)
 
 
-def plot_waypoints(files, out):
+def plot_waypoints(files, out, level):
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True, constrained_layout=True)
     for path, rows in files:
         series = {}
@@ -82,8 +94,10 @@ def plot_waypoints(files, out):
         for (observer, sign), rs in series.items():
             t = [float(r["instant_s"]) for r in rs]
             label = f"{observer} ({float(rs[0]['distance_m']):.1f} m), {sign}"
-            top.plot(t, [float(r["contrast"]) for r in rs], "o-", label=label)
-            bottom.plot(t, [max(float(r["visibility_level"]), 0.1) for r in rs], "o-", label=label)
+            top.plot(t, [value(r, "contrast") for r in rs], "o-", label=label)
+            bottom.plot(t, [max(value(r, "visibility_level"), 0.1) for r in rs], "o-", label=label)
+    bottom.axhline(level, color="black", lw=0.8, ls="--")
+    bottom.text(bottom.get_xlim()[0], level, f" visible above: level {level:g}", va="bottom", fontsize=7)
     top.set_ylabel("contrast (L_sign / L_background - 1)")
     bottom.set_ylabel("visibility level (Adrian)")
     bottom.set_yscale("log")
@@ -96,12 +110,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("csv", nargs="+")
     parser.add_argument("-o", "--output", required=True)
+    parser.add_argument("--level", type=float, default=10, help="the study's criterion (vismap -vl; default 10)")
     args = parser.parse_args()
     files = [(path, rows_of(path)) for path in args.csv]
     if not any(rows for _, rows in files):
         sys.exit("plot_sight.py: no rows in " + ", ".join(args.csv))
     grid = all(r["observer"].startswith("cell_") for _, rows in files for r in rows)
-    (plot_maps if grid else plot_waypoints)(files, args.output)
+    (plot_maps if grid else plot_waypoints)(files, args.output, args.level)
 
 
 if __name__ == "__main__":
