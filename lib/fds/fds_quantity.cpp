@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 
 #include "fds/slice_file.h"
+#include "fds/smoke3d16_file.h"
 #include "fds/smoke3d_file.h"
 #include "util/error.h"
 
@@ -106,15 +107,19 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     auto volumeSlice = [&](const FdsFile& f) {
         return f.kind == FdsFile::Kind::Slice && f.cellCentred && f.volume() && f.quantity == quantity;
     };
-    auto smoke3d = [&](const FdsFile& f) { return f.kind == FdsFile::Kind::Smoke3d && f.quantity == quantity; };
+    // 3D smoke files: of any quantity where FDS wrote their 16-bit twins (.s16), else soot's 8-bit opacities.
+    auto smoke3d = [&](const FdsFile& f) {
+        return f.kind == FdsFile::Kind::Smoke3d && f.quantity == quantity &&
+               (quantity == "SOOT DENSITY" || !smoke3d16Beside(f.path).empty());
+    };
+    auto present = [&](const FdsFile& f) { return fileExists(f.path) || !smoke3d16Beside(f.path).empty(); };
     bool slices = std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
         return volumeSlice(f) && fileExists(f.path);
     });
-    bool soot3d = !slices && quantity == "SOOT DENSITY" &&
-                  std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
-                      return smoke3d(f) && fileExists(f.path);
-                  });
-    source_ = slices ? "cell-centred 3D slices" : soot3d ? "3D smoke files (8-bit opacities)" : "";
+    bool soot3d = !slices && std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
+        return smoke3d(f) && present(f);
+    });
+    source_ = slices ? "cell-centred 3D slices" : soot3d ? "3D smoke files" : "";
     const size_t meshCount = smv.meshes.size();
     meshSources_.assign(meshCount, MeshSource::None);
     meshNotes_.assign(meshCount, "");
@@ -123,13 +128,15 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     for (const FdsFile& f : smv.files) {
         if (!(slices || soot3d) || !(slices ? volumeSlice(f) : smoke3d(f)) || meshSources_[size_t(f.mesh)] != MeshSource::None)
             continue;
-        if (!fileExists(f.path)) {
+        if (!present(f)) {
             absent[size_t(f.mesh)] = f.path;
             continue;
         }
         chosen.push_back(&f);
         meshSources_[size_t(f.mesh)] = MeshSource::Volume;
-        meshNotes_[size_t(f.mesh)] = source_;
+        meshNotes_[size_t(f.mesh)] = slices ? source_
+                                    : smoke3d16Beside(f.path).empty() ? "3D smoke files (8-bit opacities)"
+                                                                      : "16-bit 3D smoke files (.s16)";
     }
     // The layer's slices: per mesh without 3D data, the horizontal one in the layer nearest its middle.
     double massExtinction = kSootMassExtinction;
@@ -257,6 +264,21 @@ void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vec
 
 void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
     const FdsMesh& m = smv.meshes[size_t(f.mesh)];
+    if (const std::string path = smoke3d16Beside(f.path); !path.empty()) {
+        Smoke3d16File s = readSmoke3d16(
+            path, m.cells, framesAround(instants, path, [&](const Wanted& w) { readSmoke3d16(path, m.cells, w); }));
+        if (s.truncated) warnings_.push_back(path + ": ends inside a frame (FDS still running?): its last frame is left out");
+        MeshFrames frames;
+        frames.size = m.cells + 1;
+        frames.refine = refinement(smv, f.mesh, false);
+        frames.first = place(smv, f.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+        for (Smoke3d16Frame& frame : s.frames) {
+            frames.times.push_back(frame.time);
+            frames.values.push_back(std::move(frame.values));
+        }
+        meshes_.push_back(std::move(frames));
+        return;
+    }
     Smoke3dFile s =
         readSmoke3d(f.path, m.cells, framesAround(instants, f.path, [&](const Wanted& w) { readSmoke3d(f.path, m.cells, w); }));
     if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");

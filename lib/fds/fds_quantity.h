@@ -1,7 +1,9 @@
 // One quantity of an FDS case (soot density, temperature, …) over all its meshes and output instants, as
 // voxels of one lattice: what an OpenVDB grid holds. From the best files the case has for it: cell-centred 3D
-// slices (the cells' own values, as FDS computed them), else for soot density the 3D smoke files (node values,
-// 8-bit opacities: ±0.02 /m of extinction at 0.1 m cells, smoke_file.h).
+// slices (the cells' own values, as FDS computed them), else the 3D smoke files: their 16-bit twins (.s16, any
+// quantity, node values within a step of 1/65535 of the frame's range), else for soot density the 8-bit
+// opacities (±0.02 /m of extinction at 0.1 m cells, smoke3d_file.h); meshes without either from a horizontal 2D
+// slice over a layer of heights, when asked (SliceLayer).
 #pragma once
 #include <functional>
 #include <optional>

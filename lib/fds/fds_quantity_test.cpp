@@ -163,7 +163,8 @@ TEST(FdsQuantity, SootFromSmokeFilesIsTheSlicesWithinTheBytes) {
     FdsQuantity cells(smv, "SOOT DENSITY");
     std::erase_if(smv.files, [](const FdsFile& f) { return f.kind == FdsFile::Kind::Slice; });
     FdsQuantity nodes(smv, "SOOT DENSITY");
-    EXPECT_EQ(nodes.source(), "3D smoke files (8-bit opacities)");
+    EXPECT_EQ(nodes.source(), "3D smoke files");
+    EXPECT_EQ(nodes.meshSourceNotes()[0], "3D smoke files (8-bit opacities)");
     const double km = 8700, dx = 0.1;
     auto byte = [&](double density) { return 254 * -std::expm1(-km * density * dx); };
     int inside = 0, checked = 0;
@@ -184,6 +185,46 @@ TEST(FdsQuantity, SootFromSmokeFilesIsTheSlicesWithinTheBytes) {
     EXPECT_GT(checked, 10000);
     // All of them here; 99.34 % in the shared case's 151 frames (Smoke3dFile.SootMatchesFdsExtinctionSlice…).
     EXPECT_GE(inside, 0.98 * checked) << inside << " of " << checked;
+}
+
+// test/data/fds/slices_s16 (FDS 6.9.0, SMOKE3D_16): with its 3D slice set aside, soot comes from the 16-bit
+// smoke files. Each node holds FDS's plain mean of the 8 cells around it, truncated to a step of the frame's
+// range over 65535: the slice's mean of those cells lies within a step above it (a hundredth of a step for the
+// floats' rounding).
+TEST(FdsQuantity, SootFrom16BitSmokeFilesIsTheSlicesWithinAStep) {
+    SmvIndex smv = readSmv(std::string(BRUME_TEST_DATA) + "/fds/slices_s16/slices_s16.smv");
+    FdsQuantity cells(smv, "SOOT DENSITY");
+    std::erase_if(smv.files, [](const FdsFile& f) { return f.kind == FdsFile::Kind::Slice; });
+    FdsQuantity nodes(smv, "SOOT DENSITY");
+    EXPECT_EQ(nodes.meshSourceNotes()[0], "16-bit 3D smoke files (.s16)");
+    EXPECT_EQ(nodes.meshSourceNotes()[1], "16-bit 3D smoke files (.s16)");
+    EXPECT_EQ(nodes.units(), "kg/m3");
+    int checked = 0;
+    for (double t : cells.times()) {  // the 3D slice's frames, every 2 s: the smoke files have a frame at each
+        Voxels c = byIndex(cells.at(t)), n = byIndex(nodes.at(t));
+        double largest = 0;
+        for (const auto& [index, v] : c) largest = std::max(largest, double(v));
+        const double step = largest / 65535;
+        for (int k = 1; k < 10; ++k)
+            for (int j = 1; j < 10; ++j)
+                for (int i = 1; i < 20; ++i) {
+                    double mean = 0;
+                    for (int d = 0; d < 8; ++d) mean += c[{i - 1 + (d & 1), j - 1 + (d >> 1 & 1), k - 1 + (d >> 2)}] / 8.0;
+                    const double node = n[{i, j, k}];
+                    ASSERT_GE(mean, node - 0.01 * step - 1e-12) << t << " s, node " << i << " " << j << " " << k;
+                    ASSERT_LE(mean, node + 1.01 * step + 1e-12) << t << " s, node " << i << " " << j << " " << k;
+                    ++checked;
+                }
+    }
+    EXPECT_GT(checked, 5000);
+    // Temperature has no 3D slice in the case: its .s16 files, in kelvin.
+    FdsQuantity temperature(readSmv(std::string(BRUME_TEST_DATA) + "/fds/slices_s16/slices_s16.smv"), "TEMPERATURE");
+    EXPECT_EQ(temperature.units(), "K");
+    LatticeVoxels hot = temperature.at(10);
+    double most = 0;
+    for (const auto& [index, v] : hot.values) most = std::max(most, double(v));
+    EXPECT_GT(most, 400);  // over the burner
+    EXPECT_LT(most, 2500);
 }
 
 }  // namespace
