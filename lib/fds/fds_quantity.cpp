@@ -77,14 +77,18 @@ std::string metres(double x) {
     return text;
 }
 
+// FDS writes a smoke's optical density as K / 2.3, not K / ln 10: 2.3 × OD is its K exactly (ln 10
+// would give 0.11 % more).
+constexpr double kOpticalDensityFactor = 2.3;
+
 // The quantity's value per unit of a slice's quantity `from`, to fill a layer with: 1 for the quantity itself,
-// else between soot's density, extinction coefficient and optical density (K = ln 10 × OD = K_m × ρ); none for
+// else between soot's density, extinction coefficient and optical density (K = 2.3 × OD = K_m × ρ); none for
 // anything else.
 std::optional<double> layerScale(const std::string& quantity, const std::string& from, double massExtinction) {
     if (from == quantity) return 1.0;
     auto perExtinction = [&](const std::string& q) -> std::optional<double> {  // K per unit of q
         if (q == "SOOT EXTINCTION COEFFICIENT" || q == "EXTINCTION COEFFICIENT") return 1.0;
-        if (q == "SOOT OPTICAL DENSITY" || q == "OPTICAL DENSITY") return std::log(10.0);
+        if (q == "SOOT OPTICAL DENSITY" || q == "OPTICAL DENSITY") return kOpticalDensityFactor;
         if (q == "SOOT DENSITY") return massExtinction;
         return std::nullopt;
     };

@@ -41,8 +41,8 @@ public:
     // meshes are not on one lattice (stretched cells, cells that are not multiples, meshes off the lattice), or
     // "file: …" where a file cannot be read or has no frames around an instant.
     // With `layer`, meshes without 3D data of the quantity take a horizontal 2D slice's over the layer's heights,
-    // from a slice of the quantity itself or of soot's extinction or optical density (K = ln 10 × the optical
-    // density; soot density = K over the mass extinction coefficient); Error where the case has 3D data in no
+    // from a slice of the quantity itself or of soot's extinction or optical density (K = 2.3 × the optical
+    // density, as FDS writes it; soot density = K over the mass extinction coefficient); Error where the case has 3D data in no
     // mesh and no such slice either.
     FdsQuantity(const SmvIndex& smv, const std::string& quantity, const std::vector<double>& instants = {},
                 const std::optional<SliceLayer>& layer = std::nullopt);

@@ -227,5 +227,37 @@ TEST(FdsQuantity, SootFrom16BitSmokeFilesIsTheSlicesWithinAStep) {
     EXPECT_LT(most, 2500);
 }
 
+// A layer from a horizontal slice (fds2vdb -l), in soot density whatever the slice holds: soot's extinction
+// coefficient over K_m, its optical density times 2.3 over K_m (FDS's OD = K / 2.3, not K / ln 10, which is
+// 0.11 % off here), its density as it is. FDS computes them from one
+// another, so the same plane gives the same layer (to the floats' rounding); over the layer's heights only, the
+// rest of the meshes' boxes without data.
+TEST(FdsQuantity, ALayerFromAnyOfSootsSlicesIsTheSameSoot) {
+    const SmvIndex all = readSmv(std::string(BRUME_TEST_DATA) + "/fds/slices_s16/slices_s16.smv");
+    auto layerFrom = [&](const std::string& quantity, bool cellCentred) {
+        SmvIndex smv = all;
+        std::erase_if(smv.files, [&](const FdsFile& f) {
+            return f.kind != FdsFile::Kind::Slice || f.quantity != quantity || f.cellCentred != cellCentred || f.volume();
+        });
+        FdsQuantity q(smv, "SOOT DENSITY", {5, 10}, SliceLayer{0.3, 0.8});
+        EXPECT_EQ(q.meshSources()[0], MeshSource::Layer);
+        EXPECT_NE(q.meshSourceNotes()[1].find("the 2D slice '" + quantity + "'"), std::string::npos) << q.meshSourceNotes()[1];
+        EXPECT_EQ(q.units(), "kg/m3");
+        return byIndex(q.at(10));
+    };
+    Voxels extinction = layerFrom("SOOT EXTINCTION COEFFICIENT", true), density = layerFrom("SOOT DENSITY", true);
+    Voxels nodeExtinction = layerFrom("SOOT EXTINCTION COEFFICIENT", false),
+           opticalDensity = layerFrom("SOOT OPTICAL DENSITY", false);
+    ASSERT_EQ(extinction.size(), density.size());
+    ASSERT_FALSE(extinction.empty());
+    int k0 = 1 << 30, k1 = -k0;
+    for (const auto& [index, v] : extinction) {
+        EXPECT_NEAR(v, density.at(index), 1e-5 * v + 1e-12);
+        k0 = std::min(k0, std::get<2>(index)), k1 = std::max(k1, std::get<2>(index));
+    }
+    EXPECT_EQ(k1 - k0 + 1, 5);  // the voxel centres between 0.3 and 0.8 m on the cells' lattice: 0.35 ... 0.75
+    for (const auto& [index, v] : nodeExtinction) EXPECT_NEAR(v, opticalDensity.at(index), 1e-5 * v + 1e-12);
+}
+
 }  // namespace
 }  // namespace brume
