@@ -315,6 +315,28 @@ TEST_F(Vismap, LossesAreInterpolatedBetweenInstantsAndReported) {
     EXPECT_EQ(clear.out.find("inf"), std::string::npos);
 }
 
+// Inputs likely wrong are warned of before the study runs: a sign whose front faces no eye (its vertex order),
+// eyes inside a solid (a closed box of outward faces around one of them).
+TEST_F(Vismap, WarnsOfSignsFacingNoEyeAndEyesInsideSolids) {
+    std::ofstream(dir_ / "box.rad") << "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                                       "grey polygon x0 0 0 12  3 -1 1  3 -1 2  3 1 2  3 1 1\n"
+                                       "grey polygon x1 0 0 12  4 -1 1  4 1 1  4 1 2  4 -1 2\n"
+                                       "grey polygon y0 0 0 12  3 -1 1  4 -1 1  4 -1 2  3 -1 2\n"
+                                       "grey polygon y1 0 0 12  3 1 1  3 1 2  4 1 2  4 1 1\n"
+                                       "grey polygon z0 0 0 12  3 -1 1  3 1 1  4 1 1  4 -1 1\n"
+                                       "grey polygon z1 0 0 12  3 -1 2  4 -1 2  4 1 2  3 1 2\n";
+    waypoints("walled 3.5 0 1.5\nbehind -2 0 1.75\nopen 6 3 1.75\n");
+    Output r = run("vismap -S signs.txt -wp route.txt -ab 0 -vr 1 sign.rad box.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("1 of 3 eyes lie inside solids (walled)"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("faces away"), std::string::npos) << r.err;
+    waypoints("behind -2 0 1.75\n");
+    r = run("vismap -S signs.txt -wp route.txt -ab 0 -vr 1 sign.rad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("sign 'sign' faces away from every eye"), std::string::npos) << r.err;
+    EXPECT_EQ(csv(r.out)[0].at("verdict"), "behind");
+}
+
 TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
     waypoints("a 2 0 1.75\n");
     auto error = [&](const std::string& options, const std::string& signs) {

@@ -16,6 +16,7 @@
 #include "util/header.h"
 #include "visibility/endurance.h"
 #include "visibility/sign_list.h"
+#include "visibility/study_checks.h"
 #include "visibility/study_report.h"
 
 using namespace brume;
@@ -127,6 +128,7 @@ int run(int argc, char** argv) {
     tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);
 
     const VisibilityStudy study(std::move(observers), std::move(signs), o.study);
+    for (const std::string& w : studyWarnings(study, renderScene.geometry(), renderScene.smoke())) warn(w);
     StudyReport report(study, stdout, {o.prefix, grid, commandLine(line->command), instants, renderScene.smoke()});
     Endurance endurance(study.observers().size(), study.signs().size());
     ProgressMeter progress("vismap", o.reportInterval);

@@ -79,7 +79,7 @@ std::vector<SightLine> VisibilityStudy::at(double time, Sequence& sequence, cons
     std::vector<bool> inPass(lines(), true);  // the sight lines the pass traces rays for
     std::vector<size_t> rays(aims_.size());
     std::iota(rays.begin(), rays.end(), size_t(0));
-    for (int pass = 0; !rays.empty(); ++pass) {
+    for (int pass = 0; pass == 0 || !rays.empty(); ++pass) {  // one pass at least: lines with no ray are judged too
         std::vector<RayRecord> records(rays.size());
         sequence.run(rays.size(), time, [&](size_t i, WorkItem& item) {
             const Aim& a = aims_[rays[i]];
