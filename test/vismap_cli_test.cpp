@@ -337,6 +337,26 @@ TEST_F(Vismap, WarnsOfSignsFacingNoEyeAndEyesInsideSolids) {
     EXPECT_EQ(csv(r.out)[0].at("verdict"), "behind");
 }
 
+// -vj: Jin's law alone, no light traced: the same optical depths and Jin's verdicts as the full study, the light's
+// columns empty, signs hidden by the scene's surfaces across the line to their centre.
+TEST_F(Vismap, JinAloneAgreesWithTheFullStudysJinColumns) {
+    std::ofstream(dir_ / "screen.rad") << "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                                          "grey polygon screen 0 0 12  3 -4 0  3 0 0  3 0 4  3 -4 4\n";
+    const std::string grid = "-S signs.txt -g 4 -2 8 2 1 1.75 -ab 0 -me .2 .2 .2 -ma 0 0 0 sign.rad screen.rad";
+    Output full = run("vismap " + grid), alone = run("vismap -vj " + grid);
+    ASSERT_EQ(full.status, 0) << full.err;
+    ASSERT_EQ(alone.status, 0) << alone.err;
+    std::vector<Row> a = csv(full.out), b = csv(alone.out);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].at("optical_depth"), b[i].at("optical_depth"));
+        EXPECT_EQ(a[i].at("jin_verdict"), b[i].at("jin_verdict"));
+        EXPECT_EQ(b[i].at("verdict"), a[i].at("verdict") == "hidden" ? "hidden" : "not-traced") << a[i].at("observer");
+        EXPECT_EQ(b[i].at("sign_cd_m2"), "");
+        EXPECT_EQ(b[i].at("visibility_level"), "");
+    }
+}
+
 TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
     waypoints("a 2 0 1.75\n");
     auto error = [&](const std::string& options, const std::string& signs) {

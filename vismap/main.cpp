@@ -65,6 +65,12 @@ OptionTable makeTable(Options& o) {
     addRealOption(t, "-vt", o.study.criteria.observer.seconds, "the observation time (s)");
     addRealOption(t, "-vc", o.study.criteria.minimumCoverage,
                   "the share of a line with smoke data below which no sign is called visible (0: the rest clear air)");
+    t.addBool("-vj", o.study.jinOnly, "Jin's law and the local criteria only: no light traced (fast)");
+    t.addBool("-vf", o.study.criteria.jinViewAngle,
+              "Jin's S times the cosine of the angle the eye sees the sign's front at (FDSVisMap's view-angle factor)");
+    addRealOption(t, "-vx", o.study.criteria.jinCap, "Jin's S at most this (m; FDSVisMap and FDS cap it at 30)");
+    addRealOption(t, "-vs", o.study.criteria.leastLocalVisibility,
+                  "the least local visibility C/K at the eye (m; Smokeview's criterion, 5 or 10; 0: none)");
     t.add("-vk", 1, "the K of Jin's law: 633 (soot's at 633 nm, as FDS's VISIBILITY; default) or photopic",
           [&o](const auto& a) {
               if (a[0] == "633") o.study.quoted = QuotedExtinction::At633nm;
@@ -110,6 +116,8 @@ int run(int argc, char** argv) {
     if (o.signs.empty()) throw UsageError("no signs (-S)", kUsage);
     if (o.study.rays < 1) throw UsageError("-vr: at least one ray", kUsage);
     if (o.study.passes < 1) throw UsageError("-vp: at least one pass", kUsage);
+    if (!(o.study.criteria.jinCap > 0)) throw UsageError("-vx: a distance > 0", kUsage);
+    if (!(o.study.criteria.leastLocalVisibility >= 0)) throw UsageError("-vs: a distance >= 0", kUsage);
     if (!(o.study.criteria.minimumCoverage >= 0 && o.study.criteria.minimumCoverage <= 1))
         throw UsageError("-vc: a share, from 0 to 1", kUsage);
     if (o.grid.empty() == o.waypoints.empty()) throw UsageError("give observers either on a grid (-g) or at waypoints (-wp)", kUsage);
@@ -132,9 +140,9 @@ int run(int argc, char** argv) {
     StudyReport report(study, stdout, {o.prefix, grid, commandLine(line->command), instants, renderScene.smoke()});
     Endurance endurance(study.observers().size(), study.signs().size());
     ProgressMeter progress("vismap", o.reportInterval);
-    progress.start(long(study.firstPassRays() * instants.size()));
+    progress.start(long((o.study.jinOnly ? study.lines() : study.firstPassRays()) * instants.size()));
     for (double t : instants) {
-        std::vector<SightLine> lines = study.at(t, sequence, [&] { progress.advance(1, 1); });
+        std::vector<SightLine> lines = study.at(t, sequence, renderScene, [&] { progress.advance(1, 1); });
         report.instant(t, lines);
         endurance.add(t, lines, study);
     }

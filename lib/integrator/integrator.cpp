@@ -325,6 +325,12 @@ double Integrator::quotedDepthBetween(const dvec3& from, const dvec3& to, double
     return media_.smokeAt(time).quotedDepth(line, 0, distance, media_.homogeneousAlong(line, nullptr, PathState{}), quoted);
 }
 
+double Integrator::quotedExtinctionAt(const dvec3& point, double time, QuotedExtinction quoted) const {
+    if (!media_.present()) return 0;
+    Ray here(point, dvec3(0, 0, 1));
+    return media_.smokeAt(time).quotedExtinction(point, media_.homogeneousAlong(here, nullptr, PathState{}), quoted);
+}
+
 double Integrator::dataCoverageBetween(const dvec3& from, const dvec3& to, double time) const {
     double distance = glm::length(to - from);
     if (!media_.present() || !(distance > 0)) return 1;

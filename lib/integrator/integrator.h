@@ -64,6 +64,8 @@ public:
     // smoke at `time`, a prepared instant), surfaces ignored and exact, K each medium's as a study quotes one
     // number (QuotedExtinction): the optical depth of a line of sight, for Jin's law.
     double quotedDepthBetween(const dvec3& from, const dvec3& to, double time, QuotedExtinction quoted) const;
+    // K at `point` (as quotedDepthBetween counts it), at `time`.
+    double quotedExtinctionAt(const dvec3& point, double time, QuotedExtinction quoted) const;
     // The share of the line from `from` to `to` where the smoke has data or claims none (1 but where a
     // simulation's domain lacks data, DataCoverage), at `time`.
     double dataCoverageBetween(const dvec3& from, const dvec3& to, double time) const;

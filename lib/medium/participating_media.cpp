@@ -182,6 +182,12 @@ double ParticipatingMedia::quotedDepth(const Ray& ray, double start, double end,
     return depth;
 }
 
+double ParticipatingMedia::quotedExtinction(const dvec3& p, const HomogeneousMedium& h, QuotedExtinction quoted) const {
+    double k = photopic(h.extinction);
+    for (const SmokeVolume& v : smoke_) k += v.quotedExtinctionPerDensity(quoted) * v.density(p);
+    return k;
+}
+
 double ParticipatingMedia::uncoveredLength(const Ray& ray, double start, double end) const {
     double most = 0;
     for (const SmokeVolume& v : smoke_) most = std::max(most, v.uncoveredLength(ray, start, end));

@@ -67,6 +67,8 @@ public:
     // ∫K dt between start and end through `h` and the smoke, K each one's as a study quotes one number
     // (QuotedExtinction; the homogeneous medium's photopic mean): the optical depth of a line of sight.
     double quotedDepth(const Ray& ray, double start, double end, const HomogeneousMedium& h, QuotedExtinction quoted) const;
+    // K at a point, as quotedDepth counts it: the local extinction FDS's VISIBILITY (C / K) divides by.
+    double quotedExtinction(const dvec3& p, const HomogeneousMedium& h, QuotedExtinction quoted) const;
     // The length of [start, end] through a simulation's domain where the smoke has no data (the longest of the
     // smokes', SmokeVolume::uncoveredLength).
     double uncoveredLength(const Ray& ray, double start, double end) const;

@@ -49,7 +49,7 @@ void Endurance::add(double time, const std::vector<SightLine>& lines, const Visi
             // Jin's law lost by its optical depth alone: the line neither hidden nor without data.
             const bool deep = !j.jinVisible && !j.jinNoData && m.facing && m.seenShare >= criteria.minimumSeenShare &&
                               m.coverage >= criteria.minimumCoverage;
-            jin_[line].add(time, j.jinVisible, m.opticalDepth, deep, study.signOf(line).jinConstant);
+            jin_[line].add(time, j.jinVisible, m.opticalDepth, deep && j.jinDepthLimit >= 0, j.jinDepthLimit);
             anyLight = anyLight || seen;
             anyJin = anyJin || j.jinVisible;
         }

@@ -3,6 +3,7 @@
 // included in both), judged by Adrian's visibility level, and beside it Jin's law from the same line's optical
 // depth alone.
 #pragma once
+#include <limits>
 #include <string>
 
 #include "visibility/adrian.h"
@@ -21,6 +22,9 @@ struct SightMeasure {
     double coverage = 1;             // the share of that line where the smoke has data (DataCoverage): the rest
                                      // lies in its simulation's domain, without data, and adds nothing to ∫K
     bool facing = true;              // the eye is on the sign's front side
+    double viewCosine = 1;           // of the angle between the sign's front and the line to the eye
+    double eyeExtinction = 0;        // K at the eye (as the optical depth counts it)
+    double legibilityDistance = 0;   // m: the distance factor Z times the sign's height (EN 1838, ISO 3864)
 };
 
 struct VisibilityCriteria {
@@ -30,11 +34,19 @@ struct VisibilityCriteria {
     // A sign is not called visible (by either criterion) along a line with less of it with data: what is
     // missing would only add smoke. 0: the rest taken for clear air.
     double minimumCoverage = 0.5;
+    // Jin's law as FDSVisMap applies it, when asked: S times the cosine of the angle the eye sees the sign's
+    // front at (a sign seen obliquely reads as nearer its threshold), S at most `jinCap` (FDS's 30 m cap of its
+    // VISIBILITY). Neither by default: S = C / K.
+    bool jinViewAngle = false;
+    double jinCap = std::numeric_limits<double>::infinity();
+    // Smokeview's local criterion: C / K at the eye at least this (m); 0: none.
+    double leastLocalVisibility = 0;
 };
 
 // NoData: the sign would be visible if the line's stretch without data were clear air, which no one knows.
-enum class Verdict { Visible, BelowThreshold, Hidden, Behind, NoData };
-const char* verdictName(Verdict v);  // "visible", "below-threshold", "hidden", "behind", "no-data"
+// NotTraced: no light traced (vismap -vj), Jin's law alone.
+enum class Verdict { Visible, BelowThreshold, Hidden, Behind, NoData, NotTraced };
+const char* verdictName(Verdict v);  // "visible", "below-threshold", "hidden", "behind", "no-data", "not-traced"
 
 struct SightJudgement {
     double contrast = 0;             // (L_sign − L_background) / L_background
@@ -44,10 +56,17 @@ struct SightJudgement {
     double levelError = 0;           // its standard error from the luminances' (the threshold taken as exact)
     Verdict verdict = Verdict::Hidden;
     double meanExtinction = 0;       // 1/m: the optical depth over the distance
-    double jinDistance = 0;          // m: Jin's S = C / K with K that mean (infinite in clear air)
-    bool jinVisible = false;         // S ≥ the distance (optical depth ≤ C), on the sign's front, not hidden,
+    double jinDistance = 0;          // m: Jin's S = C / K with K that mean (infinite in clear air), capped and
+                                     // times the view's cosine where the criteria say
+    double jinDepthLimit = 0;        // the optical depth up to which S reaches the distance (C, or C times the
+                                     // view's cosine; −1 where the cap keeps it short whatever the smoke)
+    bool jinVisible = false;         // S ≥ the distance (optical depth ≤ the limit), on the sign's front, not hidden,
                                      // with data enough
     bool jinNoData = false;          // visible by Jin's law but for the line's stretch without data
+    double localVisibility = 0;      // m: C / K at the eye (infinite in clear air), FDS's VISIBILITY with its
+                                     // factor the sign's C
+    bool localEnough = true;         // at least the criterion's least
+    bool legible = false;            // within the legibility distance, facing, not hidden
 };
 
 SightJudgement judge(const SightMeasure& m, double jinConstant, const VisibilityCriteria& criteria);

@@ -88,5 +88,39 @@ TEST(Sight, ALineMostlyWithoutDataIsNotCalledVisible) {
     EXPECT_TRUE(judge(m, 8, c).jinVisible);
 }
 
+// The criteria beside Adrian's: FDSVisMap's form of Jin's law (S capped, times the view's cosine), Smokeview's
+// local visibility C / K at the eye, and a sign's legibility distance (Z times its height).
+TEST(Sight, FdsVisMapsJinLocalVisibilityAndLegibility) {
+    VisibilityCriteria c;
+    SightMeasure m = measure(100, 10, 10, 2);  // S = 8 · 10 / 2 = 40 m at 10 m
+    m.viewCosine = 0.5;
+    m.eyeExtinction = 0.4;
+    m.legibilityDistance = 200 * 0.2;  // an emitting sign 0.2 m high
+    SightJudgement plain = judge(m, 8, c);
+    EXPECT_NEAR(plain.jinDistance, 40, 1e-12);
+    EXPECT_TRUE(plain.jinVisible);
+    EXPECT_NEAR(plain.localVisibility, 20, 1e-12);
+    EXPECT_TRUE(plain.localEnough);
+    EXPECT_TRUE(plain.legible);
+    c.jinCap = 30;
+    EXPECT_NEAR(judge(m, 8, c).jinDistance, 30, 1e-12);
+    c.jinViewAngle = true;  // 30 x 0.5 = 15 m: still beyond 10 m
+    EXPECT_NEAR(judge(m, 8, c).jinDistance, 15, 1e-12);
+    EXPECT_TRUE(judge(m, 8, c).jinVisible);
+    m.opticalDepth = 4.5;  // S = 17.8 m, x 0.5 = 8.9 m: short of 10 m (the depth limit is C x 0.5 = 4)
+    EXPECT_FALSE(judge(m, 8, c).jinVisible);
+    EXPECT_NEAR(judge(m, 8, c).jinDepthLimit, 4, 1e-12);
+    m.distance = 20;  // beyond what the cap x 0.5 reaches in any smoke
+    EXPECT_EQ(judge(m, 8, c).jinDepthLimit, -1);
+    m.opticalDepth = 0;
+    EXPECT_FALSE(judge(m, 8, c).jinVisible);  // clear air, yet 15 m < 20 m
+    c.leastLocalVisibility = 25;
+    EXPECT_FALSE(judge(m, 8, c).localEnough);
+    m.distance = 50;
+    EXPECT_FALSE(judge(m, 8, c).legible);
+    m.viewCosine = 0, m.opticalDepth = 0, c.jinCap = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(judge(m, 8, c).jinDistance, 0);  // edge-on: no NaN from infinity times zero
+}
+
 }  // namespace
 }  // namespace brume

@@ -1,5 +1,7 @@
 #include "visibility/sign.h"
 
+#include <limits>
+
 #include "sampling/polygon_points.h"
 
 #include <cmath>
@@ -29,6 +31,8 @@ void latticePoint(int i, int n, double& u, double& v) {
 
 double jinConstant(SignKind kind) { return kind == SignKind::Emitting ? 8 : 3; }
 
+double legibilityFactor(SignKind kind) { return kind == SignKind::Emitting ? 200 : 100; }
+
 Sign signFromScene(const Scene& scene, const std::string& name, SignKind kind, double jinConstant) {
     Sign sign;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -55,6 +59,13 @@ Sign signFromScene(const Scene& scene, const std::string& name, SignKind kind, d
         sign.centre += triangleArea(*shape, t) *
                        (shape->vertices[t[0]] + shape->vertices[t[1]] + shape->vertices[t[2]]) / 3.0;
     sign.centre /= shape->area;
+    const dvec3& n = shape->normal;
+    dvec3 up = dvec3(0, 0, 1) - n * n.z;
+    if (glm::length(up) < 1e-6) up = dvec3(0, 1, 0) - n * n.y;
+    up = glm::normalize(up);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const dvec3& v : shape->vertices) lo = std::min(lo, glm::dot(v, up)), hi = std::max(hi, glm::dot(v, up));
+    sign.height = hi - lo;
     return sign;
 }
 

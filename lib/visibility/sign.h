@@ -20,10 +20,14 @@ struct Sign {
     int object = -1;         // its polygon in the scene
     Polygon shape;
     dvec3 centre{0};         // the centroid of its area
+    double height = 0;       // its extent up its plane (along +z projected on it; +y for a sign lying flat)
 };
 
 // Jin's constant for signs of a kind (Jin 1978; CIBSE Guide E): 8 light-emitting, 3 light-reflecting.
 double jinConstant(SignKind kind);
+// The distance factor Z of a sign's legibility, d = Z × its height (EN 1838, ISO 3864-1): 200 for signs lit from
+// within (emitting), 100 for signs lit from outside (reflecting).
+double legibilityFactor(SignKind kind);
 
 // The polygon named `name` in `scene` as a sign. Throws Error where no polygon has that name, or several do,
 // or it has no area.

@@ -26,7 +26,8 @@ double standardError(double sum, double squares, int n) {
     return std::sqrt(std::max(0.0, squares / n - m * m) / (n - 1));
 }
 
-SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, double opticalDepth, double coverage) {
+SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t, double opticalDepth, double coverage,
+                     double eyeExtinction) {
     SightMeasure m;
     const dvec3 toEye = observer.eye - sign.centre;
     m.distance = glm::length(toEye);
@@ -40,6 +41,9 @@ SightMeasure measure(const Observer& observer, const Sign& sign, const Tally& t,
     m.solidAngle = m.facing ? sign.shape.area * glm::dot(sign.shape.normal, toEye) / std::pow(m.distance, 3) : 0;
     m.opticalDepth = opticalDepth;
     m.coverage = coverage;
+    m.viewCosine = m.distance > 0 ? glm::dot(sign.shape.normal, toEye) / m.distance : 1;
+    m.eyeExtinction = eyeExtinction;
+    m.legibilityDistance = legibilityFactor(sign.kind) * sign.height;
     return m;
 }
 
@@ -51,6 +55,37 @@ bool uncertain(const SightJudgement& j, const VisibilityCriteria& c) {
 }
 
 }  // namespace
+
+std::vector<SightLine> VisibilityStudy::byJinAlone(double time, Sequence& sequence, const RenderScene& scene,
+                                                   const std::function<void()>& traced) const {
+    const Integrator& integrator = sequence.integrator();
+    std::vector<SightLine> out(lines());
+    sequence.run(observers_.size(), time, [&](size_t o, WorkItem&) {  // prepares the instant; one item an eye
+        const dvec3& eye = observers_[o].eye;
+        const double atEye = integrator.quotedExtinctionAt(eye, time, settings_.quoted);
+        for (size_t s = 0; s < signs_.size(); ++s) {
+            const size_t line = o * signs_.size() + s;
+            const Sign& sign = signs_[s].sign;
+            Tally clear;
+            if (facing(sign, eye)) {
+                // Met before the sign's centre: hidden (a sign's own polygon, or anything beyond it, is not).
+                const double d = glm::length(sign.centre - eye);
+                std::optional<SurfaceHit> hit = scene.geometry().intersect(Ray(eye, (sign.centre - eye) / d));
+                clear.signRays = 1;
+                clear.signHits = !hit || hit->t >= d * (1 - 1e-9) || scene.surfaceObject(hit->surface) == sign.object;
+                traced();
+            }
+            SightLine& l = out[line];
+            l.measure = measure(observers_[o], sign, clear,
+                                integrator.quotedDepthBetween(eye, sign.centre, time, settings_.quoted),
+                                integrator.dataCoverageBetween(eye, sign.centre, time), atEye);
+            l.judgement = judge(l.measure, sign.jinConstant, settings_.criteria);
+            if (l.judgement.verdict != Verdict::Behind && l.judgement.verdict != Verdict::Hidden)
+                l.judgement.verdict = Verdict::NotTraced;
+        }
+    });
+    return out;
+}
 
 StudySign studySign(Sign sign, int rays) {
     StudySign s{std::move(sign), {}, {}};
@@ -71,11 +106,14 @@ VisibilityStudy::VisibilityStudy(std::vector<Observer> observers, std::vector<St
         }
 }
 
-std::vector<SightLine> VisibilityStudy::at(double time, Sequence& sequence, const std::function<void()>& traced) const {
+std::vector<SightLine> VisibilityStudy::at(double time, Sequence& sequence, const RenderScene& scene,
+                                           const std::function<void()>& traced) const {
     const Integrator& integrator = sequence.integrator();
+    if (settings_.jinOnly) return byJinAlone(time, sequence, scene, traced);
     std::vector<Tally> tallies(lines());
     std::vector<SightLine> out(lines());
-    std::vector<double> depths(lines()), coverage(lines());  // once the first pass has prepared the instant
+    std::vector<double> depths(lines()), coverage(lines()), atEye(observers_.size());  // once the first pass has
+                                                                                        // prepared the instant
     std::vector<bool> inPass(lines(), true);  // the sight lines the pass traces rays for
     std::vector<size_t> rays(aims_.size());
     std::iota(rays.begin(), rays.end(), size_t(0));
@@ -87,6 +125,8 @@ std::vector<SightLine> VisibilityStudy::at(double time, Sequence& sequence, cons
             records[i] = integrator.trace({eye, glm::normalize(a.target - eye), pass * aims_.size() + rays[i], time}, item);
             if (pass == 0) traced();
         });
+        for (size_t o = 0; pass == 0 && o < observers_.size(); ++o)
+            atEye[o] = integrator.quotedExtinctionAt(observers_[o].eye, time, settings_.quoted);
         for (size_t line = 0; pass == 0 && line < lines(); ++line) {
             const dvec3& eye = observerOf(line).eye;
             depths[line] = integrator.quotedDepthBetween(eye, signOf(line).centre, time, settings_.quoted);
@@ -107,7 +147,8 @@ std::vector<SightLine> VisibilityStudy::at(double time, Sequence& sequence, cons
         for (size_t line = 0; line < lines(); ++line) {
             if (!inPass[line]) continue;
             const Sign& sign = signOf(line);
-            out[line].measure = measure(observerOf(line), sign, tallies[line], depths[line], coverage[line]);
+            out[line].measure = measure(observerOf(line), sign, tallies[line], depths[line], coverage[line],
+                                        atEye[line / signs_.size()]);
             out[line].judgement = judge(out[line].measure, sign.jinConstant, settings_.criteria);
             inPass[line] = pass + 1 < settings_.passes && uncertain(out[line].judgement, settings_.criteria);
         }

@@ -9,6 +9,7 @@
 
 #include "medium/smoke.h"
 #include "render/sequence.h"
+#include "world/render_scene.h"
 #include "visibility/observers.h"
 #include "visibility/sight.h"
 #include "visibility/sign.h"
@@ -27,6 +28,9 @@ struct StudySettings {
     QuotedExtinction quoted = QuotedExtinction::At633nm;  // the K of Jin's law and of the optical depth
     int rays = 32;   // to each sign and to its band, per pass
     int passes = 4;  // at most
+    // Jin's law and the local criteria only: no light traced; a sign is hidden where the scene's surfaces cross
+    // the straight line to its centre (verdict "not-traced" for the light).
+    bool jinOnly = false;
 };
 
 struct SightLine {
@@ -48,10 +52,15 @@ public:
     // The rays of an instant's first pass (the later passes' are as few as need them).
     size_t firstPassRays() const { return aims_.size(); }
 
-    // Every sight line at instant `time` (a time the scene's smoke holds), each first-pass ray calling `traced`.
-    std::vector<SightLine> at(double time, Sequence& sequence, const std::function<void()>& traced) const;
+    // Every sight line at instant `time` (a time the scene's smoke holds), each first-pass ray calling `traced`;
+    // `scene` the one traced, whose surfaces hide signs from lines judged by Jin's law alone.
+    std::vector<SightLine> at(double time, Sequence& sequence, const RenderScene& scene,
+                              const std::function<void()>& traced) const;
 
 private:
+    std::vector<SightLine> byJinAlone(double time, Sequence& sequence, const RenderScene& scene,
+                                      const std::function<void()>& traced) const;
+
     // One ray of an instant: from an observer's eye to a point on a sign or on the band around it.
     struct Aim {
         size_t line;

@@ -39,7 +39,8 @@ std::string jsonString(const std::string& s) {
 const char* const kCsvHead =
     "instant_s,observer,x,y,z,sign,kind,distance_m,sign_cd_m2,background_cd_m2,contrast,size_arcmin,"
     "threshold_cd_m2,visibility_level,verdict,seen_share,optical_depth,mean_extinction_1_m,jin_distance_m,"
-    "jin_verdict,visibility_level_se,extinction_quoted,data_share\n";
+    "jin_verdict,visibility_level_se,extinction_quoted,data_share,local_visibility_m,local_verdict,"
+    "legibility_distance_m,legible\n";
 
 }  // namespace
 
@@ -53,20 +54,24 @@ void StudyReport::writeRow(double time, size_t line, const SightLine& s) const {
     const Sign& sign = study_.signOf(line);
     const SightMeasure& m = s.measure;
     const SightJudgement& j = s.judgement;
-    const bool behind = j.verdict == Verdict::Behind, judged = !behind && j.verdict != Verdict::Hidden;
+    // No luminances where no light was traced to the sign (behind it, or Jin's law alone), no level where the sign
+    // was not seen.
+    const bool behind = j.verdict == Verdict::Behind || study_.settings().jinOnly,
+               judged = !behind && j.verdict != Verdict::Hidden;
     const double none = std::numeric_limits<double>::quiet_NaN();
-    std::fprintf(csv_, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n",
+    std::fprintf(csv_, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n",
                  number(time, 10).c_str(), o.name.c_str(), number(o.eye.x, 10).c_str(), number(o.eye.y, 10).c_str(),
                  number(o.eye.z, 10).c_str(), sign.name.c_str(),
                  sign.kind == SignKind::Emitting ? "emitting" : "reflecting", number(m.distance).c_str(),
                  number(behind ? none : m.signLuminance, 5).c_str(),
                  number(behind ? none : m.backgroundLuminance, 5).c_str(), number(judged ? j.contrast : none).c_str(),
-                 number(behind ? none : j.angularSize).c_str(), number(judged ? j.threshold : none).c_str(),
+                 number(j.verdict == Verdict::Behind ? none : j.angularSize).c_str(), number(judged ? j.threshold : none).c_str(),
                  number(judged ? j.visibilityLevel : none).c_str(), verdictName(j.verdict),
                  number(m.seenShare, 3).c_str(), number(m.opticalDepth).c_str(), number(j.meanExtinction).c_str(),
                  number(j.jinDistance).c_str(), j.jinVisible ? "visible" : j.jinNoData ? "no-data" : "not-visible",
                  number(judged ? j.levelError : none, 3).c_str(), quotedName(study_.settings().quoted),
-                 number(m.coverage, 3).c_str());
+                 number(m.coverage, 3).c_str(), number(j.localVisibility).c_str(),
+                 j.localEnough ? "enough" : "short", number(m.legibilityDistance).c_str(), j.legible ? "yes" : "no");
 }
 
 void StudyReport::instant(double time, const std::vector<SightLine>& lines) {
@@ -195,6 +200,10 @@ void StudyReport::writeJson() const {
       << ",\n    \"least_seen_share\": " << number(c.minimumSeenShare, 6)
       << ",\n    \"least_data_share\": " << number(c.minimumCoverage, 6)
       << ",\n    \"jin\": \"S = C / K, K the mean along the line from the eye to the sign's centre\""
+      << ",\n    \"jin_view_angle_factor\": " << (c.jinViewAngle ? "true" : "false")
+      << ",\n    \"jin_cap_m\": " << (std::isfinite(c.jinCap) ? number(c.jinCap, 6) : std::string("null"))
+      << ",\n    \"least_local_visibility_m\": " << number(c.leastLocalVisibility, 6)
+      << ",\n    \"legibility\": \"distance <= Z x the sign's height, Z 200 emitting, 100 reflecting (EN 1838)\""
       << ",\n    \"extinction_quoted\": " << jsonString(quotedName(s.quoted))
       << "\n  },\n  \"rays\": " << s.rays << ",\n  \"passes\": " << s.passes << ",\n  \"signs\": [";
     for (size_t i = 0; i < study_.signs().size(); ++i) {
@@ -217,7 +226,7 @@ void StudyReport::writeJson() const {
     }
     j << "\n  ],\n  \"empty_fields\": \"no value: luminances and size where the eye is behind the sign; contrast, "
          "threshold, visibility level and its error where the sign is hidden or behind; jin_distance_m in clear air "
-         "(no optical depth)\"\n}\n";
+         "(no optical depth) unless capped; local_visibility_m where there is no smoke at the eye\"\n}\n";
     writeWhole(settings_.prefix + ".json", [&](std::ostream& out) { out << j.str(); });
 }
 
