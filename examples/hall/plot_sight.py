@@ -4,6 +4,11 @@
     plot_sight.py sight.csv [more.csv ...] -o plots.png
 
     plot_sight.py sight.csv -o plots.png --level 4      # the criterion the study used (vismap -vl; default 10)
+    plot_sight.py sight.csv -o plots.png --plan building.rad --fire 17.4,0.7   # over the floor plan
+
+With --plan (Radiance scenes, e.g. fds2rad's), the maps are drawn over the floor plan at the eyes' height: the
+walls (vertical polygons across that height) as lines, the study's signs (polygons of their names) in green with
+their names, the fire (--fire x,y) as a red star.
 
 Grid observers (cell_C_R): maps, one row per file and sign, one column per instant, each cell coloured by the
 sign's visibility level (log scale; white where the sign is hidden or seen from behind, grey with "?" where the
@@ -23,6 +28,52 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.colors as colors  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def scene_words(path):
+    """The words of a Radiance scene file, comments and commands left out."""
+    with open(path) as f:
+        for line in f:
+            if line.lstrip().startswith(("#", "!")):
+                continue
+            yield from line.split()
+
+
+def polygons(paths):
+    """{name: [(x, y, z), ...]} of the polygons of Radiance scene files."""
+    out = {}
+    for path in paths:
+        words = scene_words(path)
+        for modifier in words:
+            kind, name = next(words), next(words)
+            args = []
+            for _ in range(2):  # strings and integers
+                n = int(next(words))
+                args.append([next(words) for _ in range(n)])
+            reals = [float(next(words)) for _ in range(int(next(words)))]
+            if kind == "polygon":
+                out[name] = [tuple(reals[i:i + 3]) for i in range(0, len(reals) - 2, 3)]
+    return out
+
+
+def draw_plan(ax, plan, height, signs, fire):
+    """The walls across `height` as lines, the signs in green, the fire as a star."""
+    for name, vertices in plan.items():
+        zs = [v[2] for v in vertices]
+        if not (min(zs) <= height <= max(zs)) or max(zs) - min(zs) < 1e-6:
+            continue
+        xs, ys = [v[0] for v in vertices], [v[1] for v in vertices]
+        # a vertical polygon seen from above: the segment between its plan's farthest points
+        pts = sorted(zip(xs, ys))
+        (x0, y0), (x1, y1) = pts[0], pts[-1]
+        if name in signs:
+            ax.plot([x0, x1], [y0, y1], color="lime", lw=3, solid_capstyle="butt")
+            ax.annotate(name, ((x0 + x1) / 2, (y0 + y1) / 2), fontsize=6, color="darkgreen",
+                        xytext=(2, 2), textcoords="offset points")
+        else:
+            ax.plot([x0, x1], [y0, y1], color="black", lw=0.8)
+    if fire:
+        ax.plot(*fire, marker="*", color="red", ms=10, mec="black", mew=0.5)
 
 
 def value(r, key):
@@ -46,11 +97,11 @@ def grid_panels(files):
     return panels
 
 
-def plot_maps(files, out, level):
+def plot_maps(files, out, level, plan=None, fire=None):
     panels = grid_panels(files)
     rows = sorted({(k[0], k[1]) for k in panels}, key=lambda k: (k[0], k[1]))
     instants = sorted({k[2] for k in panels})
-    fig, axes = plt.subplots(len(rows), len(instants), figsize=(3.2 * len(instants), 3.0 * len(rows)),
+    fig, axes = plt.subplots(len(rows), len(instants), figsize=(max(5.0, 3.2 * len(instants)), 3.0 * len(rows)),
                              squeeze=False, constrained_layout=True)
     norm = colors.LogNorm(vmin=0.1, vmax=1e4)
     image = None
@@ -76,6 +127,8 @@ def plot_maps(files, out, level):
                     ax.text(x, y, "?", ha="center", va="center", fontsize=5)
                 elif light != (r["jin_verdict"] == "visible"):
                     ax.plot(x, y, "x", color="red", ms=4, mew=1)
+            if plan:
+                draw_plan(ax, plan, float(next(iter(cells.values()))["z"]), {sign}, fire)
             ax.set_title(f"{label}: {sign}, t = {t:g} s", fontsize=9)
             ax.set_xlabel("x (m)", fontsize=8)
             ax.set_ylabel("y (m)", fontsize=8)
@@ -111,12 +164,18 @@ def main():
     parser.add_argument("csv", nargs="+")
     parser.add_argument("-o", "--output", required=True)
     parser.add_argument("--level", type=float, default=10, help="the study's criterion (vismap -vl; default 10)")
+    parser.add_argument("--plan", action="append", help="Radiance scene files whose walls and signs to draw")
+    parser.add_argument("--fire", help="x,y of the fire, to mark")
     args = parser.parse_args()
     files = [(path, rows_of(path)) for path in args.csv]
     if not any(rows for _, rows in files):
         sys.exit("plot_sight.py: no rows in " + ", ".join(args.csv))
     grid = all(r["observer"].startswith("cell_") for _, rows in files for r in rows)
-    (plot_maps if grid else plot_waypoints)(files, args.output, args.level)
+    if grid:
+        fire = tuple(float(v) for v in args.fire.split(",")) if args.fire else None
+        plot_maps(files, args.output, args.level, polygons(args.plan) if args.plan else None, fire)
+    else:
+        plot_waypoints(files, args.output, args.level)
 
 
 if __name__ == "__main__":

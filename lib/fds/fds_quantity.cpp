@@ -8,6 +8,7 @@
 
 #include <glm/common.hpp>
 
+#include "fds/plot3d_file.h"
 #include "fds/slice_file.h"
 #include "fds/smoke3d16_file.h"
 #include "fds/smoke3d_file.h"
@@ -123,14 +124,26 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     bool soot3d = !slices && std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
         return smoke3d(f) && present(f);
     });
-    source_ = slices ? "cell-centred 3D slices" : soot3d ? "3D smoke files" : "";
+    double massExtinction = kSootMassExtinction;
+    for (const FdsFile& f : smv.files)
+        if (f.kind == FdsFile::Kind::Smoke3d && f.quantity == "SOOT DENSITY" && f.massExtinction > 0)
+            massExtinction = f.massExtinction;
+    // Plot3D files: of the quantity, or of soot's extinction for its density (over K_m).
+    auto plot3d = [&](const FdsFile& f) {
+        return f.kind == FdsFile::Kind::Plot3d && layerScale(quantity, f.quantity, massExtinction).has_value();
+    };
+    bool p3d = !slices && !soot3d && std::any_of(smv.files.begin(), smv.files.end(), [&](const FdsFile& f) {
+        return plot3d(f) && fileExists(f.path);
+    });
+    source_ = slices ? "cell-centred 3D slices" : soot3d ? "3D smoke files" : p3d ? "Plot3D files" : "";
     const size_t meshCount = smv.meshes.size();
     meshSources_.assign(meshCount, MeshSource::None);
     meshNotes_.assign(meshCount, "");
     std::vector<std::string> absent(meshCount);  // a file of the mesh listed in the index, not there
     std::vector<const FdsFile*> chosen;           // one file per mesh
     for (const FdsFile& f : smv.files) {
-        if (!(slices || soot3d) || !(slices ? volumeSlice(f) : smoke3d(f)) || meshSources_[size_t(f.mesh)] != MeshSource::None)
+        if (source_.empty() || !(slices ? volumeSlice(f) : soot3d ? smoke3d(f) : plot3d(f)) ||
+            meshSources_[size_t(f.mesh)] != MeshSource::None)
             continue;
         if (!present(f)) {
             absent[size_t(f.mesh)] = f.path;
@@ -138,15 +151,12 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
         }
         chosen.push_back(&f);
         meshSources_[size_t(f.mesh)] = MeshSource::Volume;
-        meshNotes_[size_t(f.mesh)] = slices ? source_
+        meshNotes_[size_t(f.mesh)] = slices  ? source_
+                                    : p3d ? "Plot3D files ('" + f.quantity + "')"
                                     : smoke3d16Beside(f.path).empty() ? "3D smoke files (8-bit opacities)"
                                                                       : "16-bit 3D smoke files (.s16)";
     }
     // The layer's slices: per mesh without 3D data, the horizontal one in the layer nearest its middle.
-    double massExtinction = kSootMassExtinction;
-    for (const FdsFile& f : smv.files)
-        if (f.kind == FdsFile::Kind::Smoke3d && f.quantity == "SOOT DENSITY" && f.massExtinction > 0)
-            massExtinction = f.massExtinction;
     std::vector<std::pair<const FdsFile*, double>> layers(meshCount, {nullptr, 0.0});
     if (layer)
         for (const FdsFile& f : smv.files) {
@@ -185,6 +195,7 @@ FdsQuantity::FdsQuantity(const SmvIndex& smv, const std::string& quantity, const
     }
     for (const FdsFile* f : chosen) {
         if (slices) addSlice(smv, *f, instants);
+        else if (p3d) addPlot3d(smv, *f, *layerScale(quantity, f->quantity, massExtinction), instants);
         else addSmoke3d(smv, *f, instants);
         if (units_.empty()) units_ = f->units;
     }
@@ -365,6 +376,34 @@ std::string FdsQuantity::addLayer(const SmvIndex& smv, const FdsFile& f, const S
     meshes_.push_back(std::move(frames));
     return "the 2D slice '" + f.quantity + "' at z = " + metres(planeHeight(smv, f)) + " over z " + metres(lo.z) +
            " to " + metres(hi.z);
+}
+
+// Every Plot3D file of `first`'s mesh and quantity is a frame (around the instants asked for, if any).
+void FdsQuantity::addPlot3d(const SmvIndex& smv, const FdsFile& first, double scale, const std::vector<double>& instants) {
+    std::vector<const FdsFile*> files;
+    for (const FdsFile& f : smv.files)
+        if (f.kind == FdsFile::Kind::Plot3d && f.mesh == first.mesh && f.quantity == first.quantity && fileExists(f.path))
+            files.push_back(&f);
+    std::sort(files.begin(), files.end(), [](const FdsFile* a, const FdsFile* b) { return a->time < b->time; });
+    const Wanted keep = framesAround(instants, first.path, [&](const Wanted& w) {
+        for (const FdsFile* f : files) w(f->time);
+    });
+    const FdsMesh& m = smv.meshes[size_t(first.mesh)];
+    MeshFrames frames;
+    frames.size = m.cells + 1;
+    frames.refine = refinement(smv, first.mesh, false);
+    frames.first = place(smv, first.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+    for (const FdsFile* f : files) {
+        if (keep && !keep(f->time)) continue;
+        if (!frames.times.empty() && f->time <= frames.times.back())
+            throw Error(f->path + ": two Plot3D files of mesh " + std::to_string(f->mesh + 1) + " at " + seconds(f->time));
+        std::vector<float> values = readPlot3dBlock(f->path, m.cells, f->block);
+        for (float& v : values) v = float(scale * v);
+        frames.times.push_back(f->time);
+        frames.values.push_back(std::move(values));
+    }
+    if (units_.empty()) units_ = scale == 1 ? first.units : "kg/m3";
+    meshes_.push_back(std::move(frames));
 }
 
 LatticeVoxels FdsQuantity::at(double time) const {

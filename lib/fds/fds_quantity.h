@@ -2,7 +2,8 @@
 // voxels of one lattice: what an OpenVDB grid holds. From the best files the case has for it: cell-centred 3D
 // slices (the cells' own values, as FDS computed them), else the 3D smoke files: their 16-bit twins (.s16, any
 // quantity, node values within a step of 1/65535 of the frame's range), else for soot density the 8-bit
-// opacities (±0.02 /m of extinction at 0.1 m cells, smoke3d_file.h); meshes without either from a horizontal 2D
+// opacities (±0.02 /m of extinction at 0.1 m cells, smoke3d_file.h), else Plot3D files (nodes, full floats, at
+// their few instants; soot density from soot's extinction over K_m); meshes without any from a horizontal 2D
 // slice over a layer of heights, when asked (SliceLayer).
 #pragma once
 #include <functional>
@@ -75,6 +76,8 @@ private:
     // The slice `f` (horizontal, of a mesh without 3D data) over the layer's heights of its mesh, its values
     // times `scale`, onto the lattice's voxels whose centres lie in the mesh's box and the layer. Returns what
     // it did, in words.
+    // The Plot3D files of `first`'s mesh and quantity, their values times `scale`.
+    void addPlot3d(const SmvIndex& smv, const FdsFile& first, double scale, const std::vector<double>& instants);
     std::string addLayer(const SmvIndex& smv, const FdsFile& f, const SliceLayer& layer, double scale,
                          const std::vector<double>& instants);
     // The lattice: the finest cells of `meshes`, aligned with the first one's (its cell centres, or its nodes for

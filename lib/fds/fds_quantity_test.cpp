@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 
+#include "fds/plot3d_file.h"
 #include "fds/slice_file.h"
 #include "fds/testing.h"
 #include "scratch_dir.h"
@@ -16,6 +17,13 @@ namespace brume {
 namespace {
 
 using Voxels = std::map<std::tuple<int, int, int>, float>;
+
+// The mean of the 8 cells around node (i, j, k) of a cell-centred lattice: what FDS writes at a node.
+double cornerMean(Voxels& c, int i, int j, int k) {
+    double mean = 0;
+    for (int d = 0; d < 8; ++d) mean += c[{i - 1 + (d & 1), j - 1 + (d >> 1 & 1), k - 1 + (d >> 2)}] / 8.0;
+    return mean;
+}
 
 Voxels byIndex(const LatticeVoxels& v) {
     Voxels out;
@@ -176,8 +184,7 @@ TEST(FdsQuantity, SootFromSmokeFilesIsTheSlicesWithinTheBytes) {
             for (int j = 1; j < 10; ++j)
                 for (int i = 1; i < 20; ++i) {
                     if (i == 10) continue;  // the shared face: two meshes' bytes averaged
-                    double mean = 0;
-                    for (int d = 0; d < 8; ++d) mean += c[{i - 1 + (d & 1), j - 1 + (d >> 1 & 1), k - 1 + (d >> 2)}] / 8.0;
+                    const double mean = cornerMean(c, i, j, k);
                     ++checked;
                     inside += std::abs(byte(n[{i, j, k}]) - byte(mean)) <= 0.5 + 1e-3;
                 }
@@ -208,8 +215,7 @@ TEST(FdsQuantity, SootFrom16BitSmokeFilesIsTheSlicesWithinAStep) {
         for (int k = 1; k < 10; ++k)
             for (int j = 1; j < 10; ++j)
                 for (int i = 1; i < 20; ++i) {
-                    double mean = 0;
-                    for (int d = 0; d < 8; ++d) mean += c[{i - 1 + (d & 1), j - 1 + (d >> 1 & 1), k - 1 + (d >> 2)}] / 8.0;
+                    const double mean = cornerMean(c, i, j, k);
                     const double node = n[{i, j, k}];
                     ASSERT_GE(mean, node - 0.01 * step - 1e-12) << t << " s, node " << i << " " << j << " " << k;
                     ASSERT_LE(mean, node + 1.01 * step + 1e-12) << t << " s, node " << i << " " << j << " " << k;
@@ -257,6 +263,38 @@ TEST(FdsQuantity, ALayerFromAnyOfSootsSlicesIsTheSameSoot) {
     }
     EXPECT_EQ(k1 - k0 + 1, 5);  // the voxel centres between 0.3 and 0.8 m on the cells' lattice: 0.35 ... 0.75
     for (const auto& [index, v] : nodeExtinction) EXPECT_NEAR(v, opticalDensity.at(index), 1e-5 * v + 1e-12);
+}
+
+// With its 3D slice and smoke files set aside, the FDS 6.9.0 case's soot comes from its Plot3D files (soot's
+// extinction over K_m, at 5.03 s and 10 s): each node the mean of the 8 cells around it, as the 3D slice has
+// them at 10 s, to the floats' rounding.
+TEST(FdsQuantity, SootFromPlot3dFilesIsTheSlicesEightCellMeans) {
+    SmvIndex smv = readSmv(std::string(BRUME_TEST_DATA) + "/fds/slices_s16/slices_s16.smv");
+    FdsQuantity cells(smv, "SOOT DENSITY", {10});
+    std::erase_if(smv.files, [](const FdsFile& f) { return f.kind != FdsFile::Kind::Plot3d; });
+    FdsQuantity nodes(smv, "SOOT DENSITY");
+    EXPECT_EQ(nodes.times(), (std::vector<double>{5.03, 10}));
+    EXPECT_EQ(nodes.meshSourceNotes()[1], "Plot3D files ('SOOT EXTINCTION COEFFICIENT')");
+    EXPECT_EQ(nodes.units(), "kg/m3");
+    Voxels c = byIndex(cells.at(10)), n = byIndex(nodes.at(10));
+    int checked = 0;
+    for (int k = 1; k < 10; ++k)
+        for (int j = 1; j < 10; ++j)
+            for (int i = 1; i < 20; ++i) {
+                const double mean = cornerMean(c, i, j, k);
+                const double node = n[{i, j, k}];
+                ASSERT_NEAR(node, mean, 1e-5 * mean + 1e-12) << i << " " << j << " " << k;
+                ++checked;
+            }
+    EXPECT_EQ(checked, 19 * 81);
+    // Temperature is in the files too, in kelvin; an instant between them is interpolated, one beyond is refused.
+    FdsQuantity temperature(smv, "TEMPERATURE", {7.5});
+    EXPECT_EQ(temperature.units(), "K");
+    EXPECT_THROW(FdsQuantity(smv, "TEMPERATURE", {12}), Error);
+    EXPECT_THROW(readPlot3dBlock(std::string(BRUME_TEST_DATA) + "/fds/slices_s16/slices_s16_1_5p03.q", glm::ivec3(10, 10, 9), 0),
+                 Error);
+    EXPECT_EQ(plot3dTime("dir/case_2_10p00.q"), 10.0);
+    EXPECT_EQ(plot3dTime("dir/case_2_10.q"), std::nullopt);
 }
 
 }  // namespace

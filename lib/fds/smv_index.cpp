@@ -1,5 +1,7 @@
 #include "fds/smv_index.h"
 
+#include "fds/plot3d_file.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -146,6 +148,25 @@ SmvIndex readSmv(const std::string& path) {
             if (!(in >> f.massExtinction)) f.massExtinction = 0;
             checkMesh(lines, f, index.meshes.size());
             index.files.push_back(readEntry(lines, dir, f));
+        } else if (key == "PL3D") {
+            // "PL3D time mesh", the file, then five quantities of three lines each (label, short label, units).
+            FdsFile f;
+            f.kind = FdsFile::Kind::Plot3d;
+            f.line = lines.number();
+            f.mesh = numbers<double>(lines, line.substr(4), 2, "the Plot3D file's time and mesh")[1] - 1;
+            checkMesh(lines, f, index.meshes.size());
+            f.path = (dir / trimmed(lines.value("the file's name"))).string();
+            std::optional<double> time = plot3dTime(f.path);
+            if (!time) lines.fail("the Plot3D file's name does not give its time (..._5p03.q)");
+            f.time = *time;
+            for (int k = 0; k < 5; ++k) {
+                FdsFile q = f;
+                q.block = k;
+                q.quantity = trimmed(lines.value("a Plot3D quantity"));
+                lines.value("its short label");
+                q.units = trimmed(lines.value("its units"));
+                index.files.push_back(q);
+            }
         } else if (key == "SLCF" || key == "SLCC") {
             FdsFile f = sliceEntry(lines, line);
             f.line = lines.number();

@@ -1,5 +1,6 @@
 // An FDS case's index, the .smv file Smokeview opens: its meshes (cells and node coordinates) and the output
-// files written for them (3D smoke and slices), each with its quantity. Only what importing smoke needs is
+// files written for them (3D smoke, slices, Plot3D: one entry per quantity of a Plot3D file), each with its
+// quantity. Only what importing smoke needs is
 // read; every other entry (obstructions, vents, boundary and Plot3D files, …) is skipped.
 #pragma once
 #include <array>
@@ -17,7 +18,7 @@ struct FdsMesh {
 };
 
 struct FdsFile {
-    enum class Kind { Smoke3d, Slice };
+    enum class Kind { Smoke3d, Slice, Plot3d };
     Kind kind = Kind::Slice;
     int mesh = 0;            // index into SmvIndex::meshes
     std::string path;        // as found beside the .smv
@@ -29,6 +30,9 @@ struct FdsFile {
     // Slice: the mesh-local index range i1 i2 j1 j2 k1 k2, and whether values are cell-centred (SLCC).
     std::array<int, 6> range{};
     bool cellCentred = false;
+    // Plot3d: which of the file's five blocks holds the quantity, and its instant (from the file's name).
+    int block = 0;
+    double time = 0;
     // Slice over a volume (three index ranges of more than one), not a plane.
     bool volume() const { return range[1] > range[0] && range[3] > range[2] && range[5] > range[4]; }
 };
