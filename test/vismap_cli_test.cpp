@@ -292,10 +292,11 @@ TEST_F(Vismap, LossesAreInterpolatedBetweenInstantsAndReported) {
     EXPECT_NEAR(number(rows[1], "optical_depth"), 12, 1e-3);
     EXPECT_EQ(rows[1].at("jin_verdict"), "not-visible");
     std::vector<Row> lost = csv(brume_test::slurp(dir_ / "study_lost.csv"));
-    ASSERT_EQ(lost.size(), 4u);  // light and Jin, for the sign and for any sign
+    ASSERT_EQ(lost.size(), 6u);  // light and Jin, for the sign, for any sign, and for the route
+    EXPECT_EQ(lost[4].at("observer"), "route:door");
     for (const Row& l : lost) {
         if (l.at("criterion") != "jin") continue;
-        EXPECT_EQ(l.at("how"), l.at("sign") == "sign" ? "interpolated" : "bracketed") << l.at("sign");
+        EXPECT_EQ(l.at("how"), l.at("sign") == "sign" ? "interpolated" : "bracketed") << l.at("sign") << l.at("observer");
         EXPECT_EQ(l.at("after_s"), "10");
         EXPECT_EQ(l.at("before_s"), "20");
         if (l.at("sign") == "sign") EXPECT_NEAR(number(l, "lost_s"), 15, 1e-3);

@@ -184,6 +184,21 @@ void StudyReport::writeLosses(const Endurance& endurance) const {
             row(ob, "any", "light", endurance.anyLight(o));
             row(ob, "any", "jin", endurance.anyJin(o));
         }
+        if (settings_.grid) return;
+        // Waypoints are a route: it is lost where its first waypoint loses every sign (the earliest instant known
+        // without one), named "route:" and that waypoint.
+        for (const char* criterion : {"light", "jin"}) {
+            const bool light = std::string(criterion) == "light";
+            size_t first = 0;
+            for (size_t o = 0; o < study_.observers().size(); ++o) {
+                const Loss &a = light ? endurance.anyLight(o) : endurance.anyJin(o),
+                           &b = light ? endurance.anyLight(first) : endurance.anyJin(first);
+                if (a.kind != Loss::Kind::Never && (b.kind == Loss::Kind::Never || a.before < b.before)) first = o;
+            }
+            Observer route = study_.observers()[first];
+            route.name = "route:" + route.name;
+            row(route, "any", criterion, light ? endurance.anyLight(first) : endurance.anyJin(first));
+        }
     });
 }
 
