@@ -193,24 +193,23 @@ echo "  rpict ${popts[*]} ${fview[*]} -o flame.hdr room.rad"
 RAYPATH="$out:${RAYPATH:-.}" timed "$picture" "$bin/rpict" "${popts[@]}" "${fview[@]}" -o "$picture" "$room"
 
 # Fire-safety visibility, from an FDS run to maps in two commands: the fire hall of the shared FDS case
-# (examples/hall; FDSVisMap's room fire, FDS 6.7.9), its soot read from the FDS output by fds2vdb (mesh 2,
-# the hall's 5 m x 5 m corner by the door: the only mesh whose 3D smoke file the case keeps), and vismap over
-# a grid of eyes at 1.7 m, every 0.5 m, at 60, 120 and 180 s: an exit sign that emits light (over the door)
-# and a sign that reflects it (a plan on the south wall), under the normal lighting and under emergency
-# lighting (1 %). Maps of each go to demo/hall_*.hdr (visibility level per instant, and the instant through
-# which each sign stays visible, by the light and by Jin's law).
+# (examples/hall; FDSVisMap's room fire, FDS 6.7.9), its soot read from the FDS output by fds2vdb (mesh 2, the
+# hall's 5 m x 5 m corner by the door, from its 3D smoke file, the only one the case keeps; the other meshes from
+# FDS's 2.05 m extinction slice over 1.5-2.5 m, -l, which the smoke object's comment states), and vismap over a
+# grid of eyes at 1.7 m, every 0.5 m, at 60, 120 and 180 s: an exit sign that emits light (over the door) and a
+# sign that reflects it (a plan on the south wall), under the normal lighting and under emergency lighting (1 %).
+# Maps of each go to demo/hall_*.hdr (visibility level per instant, and the instant through which each sign
+# stays visible, by the light and by Jin's law).
 fds=$here/../../shared/data/fds/fdsvismap_room_fire
 hall=$here/hall
 if [ -f "$fds/model.smv" ]; then
     echo
     echo "Visibility maps: the fire hall of the shared FDS case (examples/hall), eyes at 1.7 m every 0.5 m"
-    echo "  fds2vdb -t 60,120,180 -o hall_soot model.smv > hall_smoke.rad"
+    echo "  fds2vdb -t 60,120,180 -l 1.5,2.5 -o hall_soot model.smv > hall_smoke.rad"
     bin_dir=$(cd "$bin" && pwd)
-    # Its warnings stand: the other seven meshes keep no 3D smoke and have no data (rtrace and vismap warn;
-    # vismap calls "no-data" the sight lines mostly through them; fds2vdb -l fills them from the 2.05 m slice).
-    # The eyes and signs below are within mesh 2; the light that reaches them from the rest of the hall crosses
-    # those meshes as clear air.
-    (cd "$out" && "$bin_dir/fds2vdb" -t 60,120,180 -o hall_soot "$fds/model.smv" > hall_smoke.rad)
+    # Its warnings stand: above and below the slice's layer the seven meshes without 3D smoke have no data
+    # (rtrace and vismap warn; vismap calls "no-data" the sight lines mostly through space without data).
+    (cd "$out" && "$bin_dir/fds2vdb" -t 60,120,180 -l 1.5,2.5 -o hall_soot "$fds/model.smv" > hall_smoke.rad)
     hopts=(-g 10 0 15 5 0.5 1.7 -T 60,120,180 -ab 1 -ad 256 -n "$threads")
     for lighting in lights emergency; do
         echo "  vismap -S signs.txt ${hopts[*]} -o hall_$lighting hall.rad $lighting.rad hall_smoke.rad > hall_$lighting.csv"
