@@ -8,6 +8,7 @@
 
 #include "fuzz/exercise_cache_file.h"
 #include "fuzz/exercise_cal.h"
+#include "fuzz/exercise_fds_input.h"
 #include "fuzz/exercise_font.h"
 #include "fuzz/exercise_pattern_data.h"
 #include "fuzz/exercise_rays.h"
@@ -134,4 +135,9 @@ TEST(FuzzCorpus, CacheFilesLoadOrAreRefusedCleanly) {
     fs::copy_file(seed, copy, fs::copy_options::overwrite_existing);
     EXPECT_EQ(CacheFile(copy.string(), CacheIdentity{"fuzz", "fuzz", 3}).readNewVolumes().size(), 2u);
     fs::remove(copy);
+}
+
+TEST(FuzzCorpus, FdsInputsAndSignPlacementsAreReadOrRefusedCleanly) {
+    replay("corpus_fds", [](std::istream& in) { fuzz::exerciseFdsInput(in); });
+    replay("corpus_signs", [](std::istream& in) { fuzz::exerciseSignPlacements(in); });
 }
