@@ -149,7 +149,7 @@ CASES = [  # (label, smoke, options)
 def row(label, means, exact, exact_error, spreads, walls, cpus):
     def pct(x):
         return "%+.2f" % (100 * x)
-    return (f"| {label} | {exact:.4f} ± {exact_error:.4f} | " + " ".join(pct(m / CLOSED_FORM - 1) for m in means) +
+    return (f"| {label} | {exact:.4f} ± {exact_error:.1g} | " + " ".join(pct(m / CLOSED_FORM - 1) for m in means) +
             " | " + " ".join(pct(m / exact - 1) for m in means) + " | " + pct(statistics.fmean(means) / exact - 1) +
             " | " + (" ".join("%.2f" % (100 * s) for s in spreads) or "-") +
             " | %.1f | %.1f |" % (statistics.fmean(walls), statistics.fmean(cpus)))
