@@ -53,13 +53,26 @@ double LightSampler::misWeight(const Light& light, const PathState& state, const
 // Every source sample. Diffuse lobes take their source light from here alone, as in Radiance (a few
 // stratified shadow rays beat thousands of diffuse rays that rarely find a small source); lobes that are
 // also sampled by rays share it with them by the power heuristic.
+// Whether a scattering more may count where `state` is: the flames' light scattered by their own smoke on its
+// way is one (its paths, flame to smoke to here, are a bounce longer than the emission's).
+bool LightSampler::bounceLeft(const PathState& state) const {
+    return state.ambientLevel < settings_.ambientBounces || settings_.bounceTail();
+}
+
+Spectrum LightSampler::sampleLdSharingFlames(const Scatterer& at, const PathState& state, PathContext& ctx,
+                                             double flameShare) const {
+    return sourcesLd(at, SurfaceId{}, state, ctx, nullptr) +
+           flames_.sample(at, SurfaceId{}, state, subdivision(state), bounceLeft(state), ctx, flameShare);
+}
+
 Spectrum LightSampler::sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state,
                                 PathContext& ctx, const SourceShares* shares) const {
-    return sourcesLd(at, surface, state, ctx, shares) + flames_.sample(at, surface, state, subdivision(state), ctx);
+    return sourcesLd(at, surface, state, ctx, shares) +
+           flames_.sample(at, surface, state, subdivision(state), bounceLeft(state), ctx);
 }
 
 Spectrum LightSampler::besidesRecords(const Scatterer& at, const PathState& state, PathContext& ctx) const {
-    Spectrum value = flames_.sample(at, SurfaceId{}, state, subdivision(state), ctx);
+    Spectrum value = flames_.sample(at, SurfaceId{}, state, subdivision(state), bounceLeft(state), ctx);
     if (mirrorImagesOn()) value += directViaMirrors(at, SurfaceId{}, state, ctx);
     return value;
 }

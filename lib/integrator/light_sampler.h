@@ -33,6 +33,8 @@ public:
     // medium), each source's taking its share (`shares`, if given) where it is not found.
     Spectrum sampleLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
                       const SourceShares* shares = nullptr) const;
+    // The same at a point in a medium where the flames' emitted light takes `flameShare` of it (FlameLights).
+    Spectrum sampleLdSharingFlames(const Scatterer& at, const PathState& state, PathContext& ctx, double flameShare) const;
     // What volume records leave to next-event estimation at a point in a medium: the flames' light and the
     // sources' seen in flat mirrors (they hold the rest, see arriving).
     Spectrum besidesRecords(const Scatterer& at, const PathState& state, PathContext& ctx) const;
@@ -61,6 +63,7 @@ public:
 
 private:
     double subdivision(const PathState& state) const;
+    bool bounceLeft(const PathState& state) const;
     Spectrum sourcesLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
                        const SourceShares* shares) const;
     bool exactDirect(const PathState& state) const { return state.depth == 0; }

@@ -151,7 +151,7 @@ int MediaTransport::inScatteringSamples(double length, bool cached, bool flames)
 // bench/smoke.py case and with a lamp hidden in a box, whose draws are wasted; toward a large or far source
 // the draws spread along the ray much as the guards' do.)
 Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h,
-                                     const PathState& state, PathContext& ctx, Part part) const {
+                                     const PathState& state, PathContext& ctx, Part part, bool keepsShares) const {
     const ParticipatingMedia& smoke = ctx.smoke;
     std::vector<MajorantSegment> dense, clear;
     smoke.majorants(ray, start, end, &h, dense);
@@ -194,9 +194,26 @@ Spectrum MediaTransport::inScattered(const Ray& ray, double start, double end, c
         smoke.scattering(point, h, weight, phase);
         if (phase.empty()) continue;
         if (part == Part::All) sum += scattered(point, ray.dir, phase, state, ctx);
-        else sum += lights_.sampleLd(Scatterer(point, ray.dir, phase, false), SurfaceId{}, state, ctx);
+        else sum += lights_.sampleLdSharingFlames(Scatterer(point, ray.dir, phase, false), state, ctx,
+                                                  flameShareAt(point, ray.dir, state, keepsShares, ctx));
     }
     return sum;
+}
+
+// A drawn ray's share of the flames' light its medium scatters at `point` toward its origin: inside the flames'
+// box, the samples of its origin count that light too (FlameLights: what the flames' smoke scatters once along a
+// direction), and the ray keeps its multiple-importance share of it where it keeps shares of the emission it meets
+// (`keepsShares`), none where it leaves them all to the samples (a diffuse lobe's, one drawn from a collision
+// whose sources were sampled elsewhere on its ray); outside the box, and along directions no flame sample takes,
+// all of it.
+double MediaTransport::flameShareAt(const dvec3& point, const dvec3& dir, const PathState& state, bool keepsShares,
+                                    PathContext& ctx) const {
+    const ParticipatingMedia& smoke = ctx.smoke;
+    if (state.kind != PathState::Kind::Sampled || !smoke.hasFlames()) return 1;
+    const Bounds3& box = smoke.flameBox();
+    if (!(glm::all(glm::greaterThanEqual(point, box.lo)) && glm::all(glm::lessThanEqual(point, box.hi)))) return 1;
+    std::optional<double> share = lights_.flames().rayShare(smoke, state, dir);
+    return !share ? 1.0 : keepsShares ? *share : 0.0;
 }
 
 // The light a medium at `point` scatters back along the ray of direction `dir`, the phase's coefficients

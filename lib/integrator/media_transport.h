@@ -28,8 +28,9 @@ public:
 private:
     // What in-scattering sums: all the light, or the sources' that next-event estimation samples.
     enum class Part { All, Sources };
+    // `keepsShares`: the ray's sources' shares count (its parent takes them, Tracer::sampledRadiance).
     Spectrum inScattered(const Ray& ray, double start, double end, const HomogeneousMedium& h, const PathState& state,
-                         PathContext& ctx, Part part) const;
+                         PathContext& ctx, Part part, bool keepsShares = false) const;
     Spectrum scattered(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
                        PathContext& ctx) const;
     Spectrum indirect(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
@@ -41,6 +42,8 @@ private:
     Spectrum continued(const dvec3& point, const dvec3& dir, const PhaseMixture& phase, const PathState& state,
                        PathContext& ctx, bool sharesSources) const;
     int inScatteringSamples(double length, bool fromRecords, bool flames) const;
+    double flameShareAt(const dvec3& point, const dvec3& dir, const PathState& state, bool keepsShares,
+                        PathContext& ctx) const;
     bool collisionsShine(bool emits, const PathState& state) const;
 
     const RenderScene& scene_;

@@ -126,6 +126,34 @@ double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3&
     return (1 - sphere) * cells + sphere / (4 * std::numbers::pi);
 }
 
+std::optional<std::pair<double, double>> ParticipatingMedia::smokeCollision(const Ray& ray, double start, double end,
+                                                                         double u) const {
+    std::vector<DensityProfile> along(smoke_.size());
+    std::vector<DepthCollision::Term> dense, clear;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t v = 0; v < smoke_.size(); ++v) {
+        if (!crosses(smoke_[v].bounds(), ray, start, end)) continue;
+        along[v] = smoke_[v].profile(ray, start, end);
+        if (along[v].empty()) continue;
+        const Spectrum& k = smoke_[v].extinctionPerDensity();
+        dense.push_back({&along[v], bandOf(k, Band::Largest)});
+        clear.push_back({&along[v], bandOf(k, Band::Smallest)});
+        lo = std::min(lo, along[v].pieces().front().a), hi = std::max(hi, along[v].pieces().back().b);
+    }
+    // Half in the clearest band where bands differ (soot's spectrum), as emittedAlong draws: the clear bands'
+    // light comes from deeper.
+    DepthCollision near(std::move(dense)), far(std::move(clear));
+    if (!(near.reach() > 0)) return std::nullopt;
+    const bool mixed = far.reach() > 0 && far.reach() != near.reach();
+    DistanceMixture mixture(lo, hi);
+    mixture.add(mixed ? 0.5 : 1.0, &near);
+    if (mixed) mixture.add(0.5, &far);
+    const double t = mixed || !near.invertible() ? mixture.sample(u) : near.sample(u);
+    const double density = mixture.density(t);
+    if (!(density > 0)) return std::nullopt;
+    return std::pair{t, density};
+}
+
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                           Random& random, Spectrum& transmittance, int points) const {
     std::vector<DensityProfile> along(smoke_.size());  // each smoke's density on the stretch

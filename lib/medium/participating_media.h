@@ -50,6 +50,11 @@ public:
     // rays): through the core of make demo's plume a ray's spread is 0.9 %, 2.5 % with 8.
     Spectrum emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h, Random& random,
                           Spectrum& transmittance, int points = 16) const;
+    // A distance in [start, end] where the smoke's first collision falls (σ_t e^{−τ}, conditioned to fall before
+    // `end`, τ exact: DepthCollision; in its densest band, half in its clearest where they differ, as
+    // emittedAlong draws), for `u` in [0, 1), and its density; none where no smoke is. Weighing σ_s T by it
+    // leaves about the albedo times the chance of a collision at all.
+    std::optional<std::pair<double, double>> smokeCollision(const Ray& ray, double start, double end, double u) const;
     // Whether anything on the ray can scatter light (or only absorbs it).
     bool scatters(const HomogeneousMedium& h) const;
     // The Henyey–Greenstein g of what scatters along [start, end], to guide sampling: the mean g of the

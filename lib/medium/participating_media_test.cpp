@@ -63,5 +63,24 @@ TEST(ParticipatingMedia, FlameDirectionsFromInsideFollowTheirDensity) {
         EXPECT_GE(media.flameDirectionDensity(eye, d), 0.5 / (4 * std::numbers::pi));
 }
 
+// The flames' light scattered once within their box is drawn where their smoke's first collision falls: in even
+// smoke (the flame's interior, K 2 /m) the density σ e^{−σ(t − a)} / (1 − e^{−σ(b − a)}) on [a, b], which the draws
+// follow and each draw's density reports.
+TEST(ParticipatingMedia, SmokeCollisionsFollowTheDensityTheyReport) {
+    RayPathDir dir;
+    ParticipatingMedia media = flame(dir);
+    const Ray ray(dvec3(-1, 0.45, 0.25), dvec3(1, 0, 0));
+    const double a = 1.2, b = 1.8, sigma = 2;  // x 0.2-0.8: inside the box, away from its ramping edges
+    auto exact = [&](double t) { return sigma * std::exp(-sigma * (t - a)) / -std::expm1(-sigma * (b - a)); };
+    auto draw = [&](double u) -> std::optional<double> {
+        auto d = media.smokeCollision(ray, a, b, u);
+        if (!d) return std::nullopt;
+        EXPECT_NEAR(d->second, exact(d->first), 1e-6 * exact(d->first));
+        return d->first;
+    };
+    sampling::testing::expectSamplesFollowDensity(draw, exact, {.lo = a, .hi = b, .bins = 60, .draws = 200'000});
+    EXPECT_FALSE(media.smokeCollision(Ray(dvec3(-1, 5, 5), dvec3(1, 0, 0)), 0, 3, 0.5));  // no smoke there
+}
+
 }  // namespace
 }  // namespace brume
