@@ -80,6 +80,68 @@ Spectrum guidedSum(const Draw& draw, int points, Random& random, const Weighed& 
     return sum;
 }
 
+// Where the first collision with some of the smoke along [start, end] falls (those `counts` says), τ exact
+// (DepthCollision): in its densest band, half in its clearest where they differ (soot's spectrum: the clear bands
+// see deeper, and what comes from there would be left to rare draws of huge weight). The profiles of every smoke
+// the stretch crosses are kept for the caller. Holds pointers into itself: neither copied nor moved.
+class FirstCollision {
+public:
+    template <class Counts>
+    FirstCollision(const std::vector<SmokeVolume>& smoke, const Ray& ray, double start, double end, Counts counts)
+        : along_(profiles(smoke, ray, start, end)),
+          near_(terms(smoke, counts, ParticipatingMedia::Band::Largest)),
+          far_(terms(smoke, counts, ParticipatingMedia::Band::Smallest)),
+          mixed_(far_.reach() > 0 && far_.reach() != near_.reach()),
+          mixture_(extent(smoke, counts, true), extent(smoke, counts, false)) {
+        mixture_.add(mixed_ ? 0.5 : 1.0, &near_);
+        if (mixed_) mixture_.add(0.5, &far_);
+    }
+    FirstCollision(const FirstCollision&) = delete;
+    FirstCollision& operator=(const FirstCollision&) = delete;
+
+    // Each smoke's density along the stretch (empty where it does not cross it).
+    const std::vector<DensityProfile>& profiles() const { return along_; }
+    // Whether a collision can fall on the stretch at all.
+    bool any() const { return near_.reach() > 0; }
+    // The distance where the distribution reaches u (searched for from `from`); one smoke of one extinction
+    // (grey, or RGB's even smoke) inverts its profile directly.
+    double sample(double u, double from = -std::numeric_limits<double>::infinity()) const {
+        return mixed_ || !near_.invertible() ? mixture_.sample(u, from) : near_.sample(u);
+    }
+    double density(double t) const { return mixture_.density(t); }
+
+private:
+    static std::vector<DensityProfile> profiles(const std::vector<SmokeVolume>& smoke, const Ray& ray, double start,
+                                                double end) {
+        std::vector<DensityProfile> along(smoke.size());
+        for (size_t v = 0; v < smoke.size(); ++v)
+            if (crosses(smoke[v].bounds(), ray, start, end)) along[v] = smoke[v].profile(ray, start, end);
+        return along;
+    }
+    template <class Counts>
+    std::vector<DepthCollision::Term> terms(const std::vector<SmokeVolume>& smoke, Counts counts,
+                                            ParticipatingMedia::Band band) const {
+        std::vector<DepthCollision::Term> out;
+        for (size_t v = 0; v < smoke.size(); ++v)
+            if (counts(smoke[v]) && !along_[v].empty()) out.push_back({&along_[v], bandOf(smoke[v].extinctionPerDensity(), band)});
+        return out;
+    }
+    // Where the counted profiles start (`first`) or end.
+    template <class Counts>
+    double extent(const std::vector<SmokeVolume>& smoke, Counts counts, bool first) const {
+        double x = first ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+        for (size_t v = 0; v < smoke.size(); ++v)
+            if (counts(smoke[v]) && !along_[v].empty())
+                x = first ? std::min(x, along_[v].pieces().front().a) : std::max(x, along_[v].pieces().back().b);
+        return x;
+    }
+
+    std::vector<DensityProfile> along_;
+    DepthCollision near_, far_;
+    bool mixed_;
+    DistanceMixture mixture_;
+};
+
 }  // namespace
 
 ParticipatingMedia::ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(std::move(smoke)) {
@@ -128,46 +190,18 @@ double ParticipatingMedia::flameDirectionDensity(const dvec3& from, const dvec3&
 
 std::optional<std::pair<double, double>> ParticipatingMedia::smokeCollision(const Ray& ray, double start, double end,
                                                                          double u) const {
-    std::vector<DensityProfile> along(smoke_.size());
-    std::vector<DepthCollision::Term> dense, clear;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (size_t v = 0; v < smoke_.size(); ++v) {
-        if (!crosses(smoke_[v].bounds(), ray, start, end)) continue;
-        along[v] = smoke_[v].profile(ray, start, end);
-        if (along[v].empty()) continue;
-        const Spectrum& k = smoke_[v].extinctionPerDensity();
-        dense.push_back({&along[v], bandOf(k, Band::Largest)});
-        clear.push_back({&along[v], bandOf(k, Band::Smallest)});
-        lo = std::min(lo, along[v].pieces().front().a), hi = std::max(hi, along[v].pieces().back().b);
-    }
-    // Half in the clearest band where bands differ (soot's spectrum), as emittedAlong draws: the clear bands'
-    // light comes from deeper.
-    DepthCollision near(std::move(dense)), far(std::move(clear));
-    if (!(near.reach() > 0)) return std::nullopt;
-    const bool mixed = far.reach() > 0 && far.reach() != near.reach();
-    DistanceMixture mixture(lo, hi);
-    mixture.add(mixed ? 0.5 : 1.0, &near);
-    if (mixed) mixture.add(0.5, &far);
-    const double t = mixed || !near.invertible() ? mixture.sample(u) : near.sample(u);
-    const double density = mixture.density(t);
+    FirstCollision collision(smoke_, ray, start, end, [](const SmokeVolume&) { return true; });
+    if (!collision.any()) return std::nullopt;
+    const double t = collision.sample(u), density = collision.density(t);
     if (!(density > 0)) return std::nullopt;
     return std::pair{t, density};
 }
 
 Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double end, const HomogeneousMedium& h,
                                           Random& random, Spectrum& transmittance, int points) const {
-    std::vector<DensityProfile> along(smoke_.size());  // each smoke's density on the stretch
-    std::vector<DepthCollision::Term> dense, clear;     // the flames' extinction in those bands
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (size_t v = 0; v < smoke_.size(); ++v) {
-        if (!crosses(smoke_[v].bounds(), ray, start, end)) continue;
-        along[v] = smoke_[v].profile(ray, start, end);
-        if (!smoke_[v].emits() || along[v].empty()) continue;
-        const Spectrum& k = smoke_[v].extinctionPerDensity();
-        dense.push_back({&along[v], bandOf(k, Band::Largest)});
-        clear.push_back({&along[v], bandOf(k, Band::Smallest)});
-        lo = std::min(lo, along[v].pieces().front().a), hi = std::max(hi, along[v].pieces().back().b);
-    }
+    // Draws where the flames' first collision falls; the transmittance through every smoke.
+    FirstCollision collision(smoke_, ray, start, end, [](const SmokeVolume& v) { return v.emits(); });
+    const std::vector<DensityProfile>& along = collision.profiles();
     // T from `start` to t, per band, times what the flames emit at t (the densities from the profiles).
     auto light = [&](double t) {
         Spectrum through = h.transmittance(t - start), glow(0.f);
@@ -182,16 +216,9 @@ Spectrum ParticipatingMedia::emittedAlong(const Ray& ray, double start, double e
     transmittance = h.transmittance(end - start);
     for (size_t v = 0; v < smoke_.size(); ++v)
         if (!along[v].empty()) transmittance *= smoke_[v].transmittance(along[v].total());
-    DepthCollision near(std::move(dense)), far(std::move(clear));
-    if (!(near.reach() > 0)) return Spectrum(0.f);
-    bool mixed = far.reach() > 0 && far.reach() != near.reach();
-    DistanceMixture mixture(lo, hi);
-    mixture.add(mixed ? 0.5 : 1.0, &near);
-    if (mixed) mixture.add(0.5, &far);
-    // One flame of one extinction (grey, or RGB's even smoke): the draws invert its profile directly.
-    auto draw = [&](double u, double from) { return mixed || !near.invertible() ? mixture.sample(u, from) : near.sample(u); };
-    return guidedSum(draw, points, random, [&](double t) {
-        double density = mixture.density(t);
+    if (!collision.any()) return Spectrum(0.f);
+    return guidedSum([&](double u, double from) { return collision.sample(u, from); }, points, random, [&](double t) {
+        double density = collision.density(t);
         return density > 0 ? light(t) * float(1 / density) : Spectrum(0.f);
     });
 }
