@@ -56,11 +56,6 @@ Bounds3 boxOf(const FdsGroup& g, bool flatAllowed) {
     return b;
 }
 
-std::string upper(std::string s) {
-    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // The sRGB colour of a SURF or VENT group (RGB=r,g,b 0-255, or COLOR by name), with a warning where the name is
 // not known.
 std::optional<std::array<double, 3>> colourOf(const FdsGroup& g, std::vector<std::string>& warnings) {
@@ -92,15 +87,11 @@ std::array<dvec3, 4> CaseRectangle::corners() const {
 }
 
 bool CaseGeometry::inside(const dvec3& p) const {
-    return std::any_of(meshes.begin(), meshes.end(), [&](const Bounds3& b) {
-        return glm::all(glm::greaterThanEqual(p, b.lo)) && glm::all(glm::lessThanEqual(p, b.hi));
-    });
+    return std::any_of(meshes.begin(), meshes.end(), [&](const Bounds3& b) { return b.contains(p); });
 }
 
 bool CaseGeometry::inSolid(const dvec3& p) const {
-    return std::any_of(solids.begin(), solids.end(), [&](const CaseSolid& s) {
-        return glm::all(glm::greaterThanEqual(p, s.box.lo)) && glm::all(glm::lessThanEqual(p, s.box.hi));
-    });
+    return std::any_of(solids.begin(), solids.end(), [&](const CaseSolid& s) { return s.box.contains(p); });
 }
 
 CaseGeometry caseGeometry(const std::vector<FdsGroup>& groups) {
@@ -172,7 +163,7 @@ CaseGeometry caseGeometry(const std::vector<FdsGroup>& groups) {
         const std::array<int, 2> uv = planeAxes(axis);
         CaseRectangle r{axis, b.lo[axis], {b.lo[uv[0]], b.lo[uv[1]]}, {b.hi[uv[0]], b.hi[uv[1]]}, 1, surf,
                         g->text("ID").value_or("")};
-        if (upper(surf) == "OPEN") {
+        if (upperCase(surf) == "OPEN") {
             std::vector<CaseRectangle> walls;
             bool onWall = false;
             for (const CaseRectangle& w : c.walls) {
@@ -221,7 +212,7 @@ std::optional<std::array<double, 3>> fdsColour(const std::string& name) {
         {"STEEL BLUE", {70, 130, 180}}, {"BRICK", {156, 102, 31}},     {"LINEN", {250, 240, 230}},
         {"SANDY BROWN", {244, 164, 96}}, {"INDIAN RED", {205, 92, 92}}, {"FIREBRICK", {178, 34, 34}},
     };
-    auto it = kColours.find(upper(name));
+    auto it = kColours.find(upperCase(name));
     if (it == kColours.end()) return std::nullopt;
     return std::array<double, 3>{it->second[0] / 255.0, it->second[1] / 255.0, it->second[2] / 255.0};
 }

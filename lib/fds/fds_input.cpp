@@ -9,12 +9,12 @@
 
 namespace brume {
 
-namespace {
-
-std::string upper(std::string s) {
+std::string upperCase(std::string s) {
     for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
     return s;
 }
+
+namespace {
 
 // A cursor over the file's text that knows its line.
 struct Text {
@@ -72,7 +72,7 @@ FdsGroup group(Text& t) {
     FdsGroup g;
     g.where = t.here();
     t.next();  // '&'
-    g.name = upper(t.word());
+    g.name = upperCase(t.word());
     if (g.name.empty()) throw Error(g.where + ": '&' without a group name");
     for (;;) {
         t.skipSpace();
@@ -83,7 +83,7 @@ FdsGroup group(Text& t) {
         }
         if (!atParameter(t)) throw Error(t.here() + ": &" + g.name + ": expected a parameter (NAME=value), not '" +
                                           t.s.substr(t.at, std::min<size_t>(20, t.s.size() - t.at)) + "'");
-        std::string key = upper(t.word());
+        std::string key = upperCase(t.word());
         while (!t.done() && t.peek() != '=') key += t.next();  // an index, "(1:5)", kept with its name
         t.skipSpace();
         t.next();  // '='

@@ -23,6 +23,9 @@ struct FdsGroup {
     std::optional<std::vector<double>> numbers(const std::string& key, size_t n) const;
 };
 
+// `s` in upper case, as FDS compares names and colours.
+std::string upperCase(std::string s);
+
 // The groups of `in` in order. Throws Error "file:line: what" where a group is not closed by '/', a string by its
 // quote, or a parameter has no '=' or no value.
 std::vector<FdsGroup> readFdsInput(std::istream& in, const std::string& file);

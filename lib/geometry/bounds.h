@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
 
@@ -19,6 +20,8 @@ struct Bounds3 {
     void include(const Bounds3& b) {
         if (!b.empty()) include(b.lo), include(b.hi);
     }
+    // Whether p is in the box, its faces included.
+    bool contains(const dvec3& p) const { return glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi)); }
 };
 
 // Narrows [tmin, tmax] to where org + t·dir is inside the box (closed, so grazing lines count); false where

@@ -210,8 +210,7 @@ double MediaTransport::flameShareAt(const dvec3& point, const dvec3& dir, const 
                                     PathContext& ctx) const {
     const ParticipatingMedia& smoke = ctx.smoke;
     if (state.kind != PathState::Kind::Sampled || !smoke.hasFlames()) return 1;
-    const Bounds3& box = smoke.flameBox();
-    if (!(glm::all(glm::greaterThanEqual(point, box.lo)) && glm::all(glm::lessThanEqual(point, box.hi)))) return 1;
+    if (!smoke.flameBox().contains(point)) return 1;
     std::optional<double> share = lights_.flames().rayShare(smoke, state, dir);
     return !share ? 1.0 : keepsShares ? *share : 0.0;
 }

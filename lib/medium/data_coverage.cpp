@@ -83,9 +83,7 @@ bool within(const Bounds3& b, const std::vector<Bounds3>& boxes) {
             for (size_t k = 0; k + 1 < cuts[2].size(); ++k) {
                 dvec3 mid(0.5 * (cuts[0][i] + cuts[0][i + 1]), 0.5 * (cuts[1][j] + cuts[1][j + 1]),
                           0.5 * (cuts[2][k] + cuts[2][k + 1]));
-                if (std::none_of(boxes.begin(), boxes.end(), [&](const Bounds3& c) {
-                        return glm::all(glm::greaterThanEqual(mid, c.lo)) && glm::all(glm::lessThanEqual(mid, c.hi));
-                    }))
+                if (std::none_of(boxes.begin(), boxes.end(), [&](const Bounds3& c) { return c.contains(mid); }))
                     return false;
             }
     return true;

@@ -158,8 +158,7 @@ ParticipatingMedia::ParticipatingMedia(std::vector<SmokeVolume> smoke) : smoke_(
 
 // Half inside the flames' box, none outside it (where points drawn are at least as far as the box's faces).
 double ParticipatingMedia::flameSphereShare(const dvec3& from) const {
-    const bool inside = glm::all(glm::greaterThanEqual(from, flameBox_.lo)) && glm::all(glm::lessThanEqual(from, flameBox_.hi));
-    return inside ? 0.5 : 0.0;
+    return flameBox_.contains(from) ? 0.5 : 0.0;
 }
 
 std::optional<dvec3> ParticipatingMedia::sampleFlameDirection(const dvec3& from, double u0, double u1, double u2,

@@ -138,14 +138,19 @@ void checkInstants(const std::vector<SmokeDescription>& smoke, std::span<const d
     }
 }
 
+std::string dataNote(const SmokeDescription& smoke) {
+    for (const KeyFrame& f : smoke.frames->keyFrames())
+        if (!f.grid.coverage().note().empty()) return f.grid.coverage().note();
+    return "";
+}
+
 std::vector<std::string> noDataWarnings(const std::vector<SmokeDescription>& smoke) {
     std::vector<std::string> out;
     for (const SmokeDescription& s : smoke) {
         const std::vector<KeyFrame>& frames = s.frames->keyFrames();
-        auto partial = std::find_if(frames.begin(), frames.end(),
-                                    [](const KeyFrame& f) { return f.grid.coverage().incomplete(); });
-        if (partial == frames.end()) continue;
-        const std::string& note = partial->grid.coverage().note();
+        if (std::none_of(frames.begin(), frames.end(), [](const KeyFrame& f) { return f.grid.coverage().incomplete(); }))
+            continue;
+        const std::string note = dataNote(s);
         out.push_back(s.where.str() + ": smoke '" + s.name + "': part of its simulation's domain has no data" +
                       (note.empty() ? "" : " (" + note + ")") +
                       ": rays cross it as clear air (vismap flags sight lines through it)");

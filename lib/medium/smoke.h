@@ -50,6 +50,10 @@ SmokeDescription readSmoke(const SceneObject& object);
 // soot is not to stand in for it. Programs call it before they write anything; SmokeVolume checks its own.
 void checkInstants(const std::vector<SmokeDescription>& smoke, std::span<const double> times);
 
+// What the smoke's key frames say of their data (DataCoverage::note): the first frame's that says anything, "" if
+// none does.
+std::string dataNote(const SmokeDescription& smoke);
+
 // What programs tell the user of smoke whose simulation's domain has no data in part (DataCoverage): one
 // message per such smoke object ("file:line: smoke 'name': …"), saying what the data are and that rays cross
 // the rest as clear air. Empty where every smoke is whole, or claims no domain.

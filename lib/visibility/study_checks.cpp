@@ -17,7 +17,7 @@ bool inDomain(const std::vector<SmokeDescription>& smoke, const dvec3& p, bool& 
         for (const KeyFrame& f : s.frames->keyFrames())
             for (const Bounds3& b : f.grid.coverage().domain()) {
                 anyDomain = true;
-                if (glm::all(glm::greaterThanEqual(p, b.lo)) && glm::all(glm::lessThanEqual(p, b.hi))) return true;
+                if (b.contains(p)) return true;
             }
     return false;
 }

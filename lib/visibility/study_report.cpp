@@ -230,14 +230,11 @@ void StudyReport::writeJson() const {
     j << "\n  ],\n  \"smoke\": [";
     for (size_t i = 0; i < settings_.smoke.size(); ++i) {
         const SmokeDescription& d = settings_.smoke[i];
-        std::string note;
-        for (const KeyFrame& f : d.frames->keyFrames())
-            if (!f.grid.coverage().note().empty()) note = f.grid.coverage().note();
         j << (i ? "," : "") << "\n    {\"name\": " << jsonString(d.name) << ", \"where\": " << jsonString(d.where.str())
           << ", \"key_frames\": " << d.frames->keyFrames().size() << ", \"albedo\": " << number(photopic(d.albedo), 6)
           << ", \"g\": " << number(d.g, 6) << ", \"K_per_unit_633nm\": "
           << (d.extinctionAt633 ? number(*d.extinctionAt633, 6) : std::string("null"))
-          << ", \"data\": " << jsonString(note) << "}";
+          << ", \"data\": " << jsonString(dataNote(d)) << "}";
     }
     j << "\n  ],\n  \"empty_fields\": \"no value: luminances and size where the eye is behind the sign; contrast, "
          "threshold, visibility level and its error where the sign is hidden or behind; jin_distance_m in clear air "
