@@ -88,10 +88,8 @@ void writeBuilding(const CaseGeometry& g) {
         const std::string name = radianceName(s.id.empty() ? "obst" : s.id) + "_" + std::to_string(i);
         for (int axis = 0; axis < 3; ++axis)
             for (int side = 0; side < 2; ++side) {
-                const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
-                CaseRectangle face{axis, side ? s.box.hi[axis] : s.box.lo[axis], {s.box.lo[u], s.box.lo[v]},
-                                   {s.box.hi[u], s.box.hi[v]}, side ? 1 : -1, s.surf, s.id};
-                polygon("surf_" + radianceName(s.surf), name + "_" + "xyz"[axis] + (side ? "+" : "-"), face.corners());
+                polygon("surf_" + radianceName(s.surf), name + "_" + "xyz"[axis] + (side ? "+" : "-"),
+                        boxFace(s.box, axis, side, true, s.surf, s.id).corners());
             }
     }
     std::printf("\n# Vents (burners and other surfaces), 1 mm into the domain\n");

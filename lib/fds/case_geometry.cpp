@@ -86,6 +86,13 @@ std::array<dvec3, 4> CaseRectangle::corners() const {
     return c;
 }
 
+CaseRectangle boxFace(const Bounds3& box, int axis, bool high, bool outward, const std::string& surf,
+                      const std::string& id) {
+    const std::array<int, 2> uv = planeAxes(axis);
+    return {axis, high ? box.hi[axis] : box.lo[axis], {box.lo[uv[0]], box.lo[uv[1]]}, {box.hi[uv[0]], box.hi[uv[1]]},
+            high == outward ? 1 : -1, surf, id};
+}
+
 bool CaseGeometry::inside(const dvec3& p) const {
     return std::any_of(meshes.begin(), meshes.end(), [&](const Bounds3& b) { return b.contains(p); });
 }
@@ -134,18 +141,14 @@ CaseGeometry caseGeometry(const std::vector<FdsGroup>& groups) {
     for (size_t m = 0; m < c.meshes.size(); ++m)
         for (int axis = 0; axis < 3; ++axis)
             for (int side = 0; side < 2; ++side) {
-                const Bounds3& b = c.meshes[m];
-                const std::array<int, 2> uv = planeAxes(axis);
-                CaseRectangle face{axis, side ? b.hi[axis] : b.lo[axis], {b.lo[uv[0]], b.lo[uv[1]]},
-                                   {b.hi[uv[0]], b.hi[uv[1]]}, side ? -1 : 1, "INERT", ""};
+                const CaseRectangle face = boxFace(c.meshes[m], axis, side, false, "INERT", "");
                 std::vector<CaseRectangle> left = {face};
                 for (size_t n = 0; n < c.meshes.size(); ++n) {
-                    const Bounds3& o = c.meshes[n];
-                    if (n == m || (side ? o.lo[axis] : o.hi[axis]) != face.at) continue;
+                    const CaseRectangle touching = boxFace(c.meshes[n], axis, !side, true, "", "");
+                    if (n == m || touching.at != face.at) continue;
                     std::vector<CaseRectangle> next;
                     for (const CaseRectangle& r : left)
-                        for (const CaseRectangle& q : subtract(r, {o.lo[uv[0]], o.lo[uv[1]]}, {o.hi[uv[0]], o.hi[uv[1]]}))
-                            next.push_back(q);
+                        for (const CaseRectangle& q : subtract(r, touching.lo, touching.hi)) next.push_back(q);
                     left = std::move(next);
                 }
                 for (const CaseRectangle& r : left) c.walls.push_back(r);

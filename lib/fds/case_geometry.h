@@ -32,6 +32,11 @@ struct CaseRectangle {
     std::array<dvec3, 4> corners() const;
 };
 
+// The face of `box` on its lower (`high` false) or upper side along `axis`, facing out of the box (`outward`) or
+// into it.
+CaseRectangle boxFace(const Bounds3& box, int axis, bool high, bool outward, const std::string& surf,
+                      const std::string& id);
+
 struct CaseSurface {
     std::array<double, 3> rgb{0.5, 0.5, 0.5};  // 0-1, as FDS's display colour (sRGB)
     bool coloured = false;                     // COLOR or RGB given (else the default grey)
