@@ -255,7 +255,7 @@ glm::ivec3 FdsQuantity::place(const SmvIndex& smv, int mesh, const glm::dvec3& p
 void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
     SliceFile s = readSlice(f.path, framesAround(instants, f.path, [&](const Wanted& w) { readSlice(f.path, w); }));
     if (s.range != f.range) throw Error(f.path + ": its index range is not the one " + smv.path + " lists");
-    if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
+    if (s.truncated) warnTruncated(f.path);
     const FdsMesh& m = smv.meshes[size_t(f.mesh)];
     glm::ivec3 lo(f.range[0], f.range[2], f.range[4]), all(f.range[1] - f.range[0] + 1, f.range[3] - f.range[2] + 1,
                                                              f.range[5] - f.range[4] + 1);
@@ -277,16 +277,26 @@ void FdsQuantity::addSlice(const SmvIndex& smv, const FdsFile& f, const std::vec
     meshes_.push_back(std::move(frames));
 }
 
+void FdsQuantity::warnTruncated(const std::string& path) {
+    warnings_.push_back(path + ": ends inside a frame (FDS still running?): its last frame is left out");
+}
+
+FdsQuantity::MeshFrames FdsQuantity::nodeFrames(const SmvIndex& smv, int mesh) const {
+    const FdsMesh& m = smv.meshes[size_t(mesh)];
+    MeshFrames frames;
+    frames.size = m.cells + 1;
+    frames.refine = refinement(smv, mesh, false);
+    frames.first = place(smv, mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+    return frames;
+}
+
 void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants) {
     const FdsMesh& m = smv.meshes[size_t(f.mesh)];
     if (const std::string path = smoke3d16Beside(f.path); !path.empty()) {
         Smoke3d16File s = readSmoke3d16(
             path, m.cells, framesAround(instants, path, [&](const Wanted& w) { readSmoke3d16(path, m.cells, w); }));
-        if (s.truncated) warnings_.push_back(path + ": ends inside a frame (FDS still running?): its last frame is left out");
-        MeshFrames frames;
-        frames.size = m.cells + 1;
-        frames.refine = refinement(smv, f.mesh, false);
-        frames.first = place(smv, f.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+        if (s.truncated) warnTruncated(path);
+        MeshFrames frames = nodeFrames(smv, f.mesh);
         for (Smoke3d16Frame& frame : s.frames) {
             frames.times.push_back(frame.time);
             frames.values.push_back(std::move(frame.values));
@@ -296,17 +306,14 @@ void FdsQuantity::addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::v
     }
     Smoke3dFile s =
         readSmoke3d(f.path, m.cells, framesAround(instants, f.path, [&](const Wanted& w) { readSmoke3d(f.path, m.cells, w); }));
-    if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
+    if (s.truncated) warnTruncated(f.path);
     double km = f.massExtinction;
     if (!(km > 0)) {
         km = kSootMassExtinction;
         warnings_.push_back(f.path + ": no mass extinction coefficient in " + smv.path + ": FDS's default 8700 m2/kg");
     }
     const double dx = m.nodes[0][1] - m.nodes[0][0];  // FDS encodes every node with its mesh's first cell width
-    MeshFrames frames;
-    frames.size = m.cells + 1;
-    frames.refine = refinement(smv, f.mesh, false);
-    frames.first = place(smv, f.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+    MeshFrames frames = nodeFrames(smv, f.mesh);
     float density[256];
     for (int b = 0; b < 256; ++b) density[b] = float(sootDensity(b, km, dx));
     for (Smoke3dFrame& frame : s.frames) {
@@ -322,7 +329,7 @@ std::string FdsQuantity::addLayer(const SmvIndex& smv, const FdsFile& f, const S
                                   const std::vector<double>& instants) {
     SliceFile s = readSlice(f.path, framesAround(instants, f.path, [&](const Wanted& w) { readSlice(f.path, w); }));
     if (s.range != f.range) throw Error(f.path + ": its index range is not the one " + smv.path + " lists");
-    if (s.truncated) warnings_.push_back(f.path + ": ends inside a frame (FDS still running?): its last frame is left out");
+    if (s.truncated) warnTruncated(f.path);
     const FdsMesh& m = smv.meshes[size_t(f.mesh)];
     const glm::ivec3 all(f.range[1] - f.range[0] + 1, f.range[3] - f.range[2] + 1, 1);
     // The lattice's voxels whose centres lie in the mesh's box, between the layer's heights.
@@ -389,10 +396,7 @@ void FdsQuantity::addPlot3d(const SmvIndex& smv, const FdsFile& first, double sc
         for (const FdsFile* f : files) w(f->time);
     });
     const FdsMesh& m = smv.meshes[size_t(first.mesh)];
-    MeshFrames frames;
-    frames.size = m.cells + 1;
-    frames.refine = refinement(smv, first.mesh, false);
-    frames.first = place(smv, first.mesh, glm::dvec3(m.nodes[0][0], m.nodes[1][0], m.nodes[2][0]));
+    MeshFrames frames = nodeFrames(smv, first.mesh);
     for (const FdsFile* f : files) {
         if (keep && !keep(f->time)) continue;
         if (!frames.times.empty() && f->time <= frames.times.back())

@@ -71,6 +71,9 @@ private:
         std::vector<std::vector<float>> values;  // per frame, over size, x fastest
     };
     using Wanted = std::function<bool(double)>;
+    // The frames of a mesh's values at its nodes (3D smoke and Plot3D files), none read yet.
+    MeshFrames nodeFrames(const SmvIndex& smv, int mesh) const;
+    void warnTruncated(const std::string& path);  // a file FDS is still writing
     void addSlice(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
     void addSmoke3d(const SmvIndex& smv, const FdsFile& f, const std::vector<double>& instants);
     // The slice `f` (horizontal, of a mesh without 3D data) over the layer's heights of its mesh, its values
