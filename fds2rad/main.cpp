@@ -114,7 +114,7 @@ void writeSignList(const std::vector<SignPlacement>& signs, const std::string& p
     std::ofstream out(path);
     out << "# polygon kind C (fds2rad -s)\n";
     for (const SignPlacement& s : signs)
-        out << radianceName(s.name) << (s.kind == SignKind::Emitting ? " emitting " : " reflecting ") << s.jinConstant << "\n";
+        out << radianceName(s.name) << ' ' << signKindName(s.kind) << ' ' << s.jinConstant << "\n";
     if (!out) throw Error(path + ": cannot be written");
 }
 

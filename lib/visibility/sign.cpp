@@ -29,6 +29,8 @@ void latticePoint(int i, int n, double& u, double& v) {
 
 }  // namespace
 
+const char* signKindName(SignKind kind) { return kind == SignKind::Emitting ? "emitting" : "reflecting"; }
+
 double jinConstant(SignKind kind) { return kind == SignKind::Emitting ? 8 : 3; }
 
 double legibilityFactor(SignKind kind) { return kind == SignKind::Emitting ? 200 : 100; }

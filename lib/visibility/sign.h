@@ -23,6 +23,8 @@ struct Sign {
     double height = 0;       // its extent up its plane (along +z projected on it; +y for a sign lying flat)
 };
 
+// "emitting" or "reflecting", as sign lists and reports write the kind.
+const char* signKindName(SignKind kind);
 // Jin's constant for signs of a kind (Jin 1978; CIBSE Guide E): 8 light-emitting, 3 light-reflecting.
 double jinConstant(SignKind kind);
 // The distance factor Z of a sign's legibility, d = Z × its height (EN 1838, ISO 3864-1): 200 for signs lit from

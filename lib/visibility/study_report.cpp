@@ -62,7 +62,7 @@ void StudyReport::writeRow(double time, size_t line, const SightLine& s) const {
     std::fprintf(csv_, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n",
                  number(time, 10).c_str(), o.name.c_str(), number(o.eye.x, 10).c_str(), number(o.eye.y, 10).c_str(),
                  number(o.eye.z, 10).c_str(), sign.name.c_str(),
-                 sign.kind == SignKind::Emitting ? "emitting" : "reflecting", number(m.distance).c_str(),
+                 signKindName(sign.kind), number(m.distance).c_str(),
                  number(behind ? none : m.signLuminance, 5).c_str(),
                  number(behind ? none : m.backgroundLuminance, 5).c_str(), number(judged ? j.contrast : none).c_str(),
                  number(j.verdict == Verdict::Behind ? none : j.angularSize).c_str(), number(judged ? j.threshold : none).c_str(),
@@ -224,7 +224,7 @@ void StudyReport::writeJson() const {
     for (size_t i = 0; i < study_.signs().size(); ++i) {
         const Sign& sign = study_.signs()[i].sign;
         j << (i ? "," : "") << "\n    {\"name\": " << jsonString(sign.name) << ", \"kind\": "
-          << jsonString(sign.kind == SignKind::Emitting ? "emitting" : "reflecting")
+          << jsonString(signKindName(sign.kind))
           << ", \"jin_C\": " << number(sign.jinConstant, 6) << "}";
     }
     j << "\n  ],\n  \"smoke\": [";
