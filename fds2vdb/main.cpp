@@ -29,10 +29,16 @@ struct Options {
 
 const std::string kUsage = "usage: fds2vdb [options] case.smv > smoke.rad\n";
 
-std::vector<double> instantsFrom(const std::string& list) {
+// The reals of a comma-separated list given to `option`.
+std::vector<double> realsFrom(const std::string& option, const std::string& list) {
     std::vector<double> out;
     std::stringstream in(list);
-    for (std::string word; std::getline(in, word, ',');) out.push_back(toReal("-t", word));
+    for (std::string word; std::getline(in, word, ',');) out.push_back(toReal(option, word));
+    return out;
+}
+
+std::vector<double> instantsFrom(const std::string& list) {
+    std::vector<double> out = realsFrom("-t", list);
     if (out.empty() || !std::is_sorted(out.begin(), out.end()) ||
         std::adjacent_find(out.begin(), out.end()) != out.end())
         throw UsageError("-t: instants must increase (e.g. -t 30,60,90)", kUsage);
@@ -49,9 +55,7 @@ OptionTable makeTable(Options& o) {
     t.addBool("-g", o.grey, "soot's extinction grey, its 633 nm value in every band (default: soot's spectrum)");
     t.add("-l", 1, "z0,z1: meshes without 3D data take a horizontal 2D slice's values from z0 to z1 (m)",
           [&o](const auto& a) {
-              std::vector<double> z;
-              std::stringstream in(a[0]);
-              for (std::string word; std::getline(in, word, ',');) z.push_back(toReal("-l", word));
+              const std::vector<double> z = realsFrom("-l", a[0]);
               if (z.size() != 2 || !(z[0] < z[1])) throw UsageError("-l: expected two heights z0,z1 with z0 < z1", kUsage);
               o.layer = SliceLayer{z[0], z[1]};
           });

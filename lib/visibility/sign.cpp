@@ -29,6 +29,8 @@ void latticePoint(int i, int n, double& u, double& v) {
 
 }  // namespace
 
+bool facing(const Sign& sign, const dvec3& eye) { return glm::dot(sign.shape.normal, eye - sign.centre) > 0; }
+
 const char* signKindName(SignKind kind) { return kind == SignKind::Emitting ? "emitting" : "reflecting"; }
 
 double jinConstant(SignKind kind) { return kind == SignKind::Emitting ? 8 : 3; }

@@ -23,6 +23,8 @@ struct Sign {
     double height = 0;       // its extent up its plane (along +z projected on it; +y for a sign lying flat)
 };
 
+// Whether `eye` is on the sign's front side (its polygon's vertex order), where it can be seen from.
+bool facing(const Sign& sign, const dvec3& eye);
 // "emitting" or "reflecting", as sign lists and reports write the kind.
 const char* signKindName(SignKind kind);
 // Jin's constant for signs of a kind (Jin 1978; CIBSE Guide E): 8 light-emitting, 3 light-reflecting.

@@ -10,8 +10,6 @@ namespace brume {
 
 namespace {
 
-bool facing(const Sign& s, const dvec3& eye) { return glm::dot(s.shape.normal, eye - s.centre) > 0; }
-
 // The luminances one observer's rays to one sign brought, summed over passes.
 struct Tally {
     double signSum = 0, signSquares = 0, backgroundSum = 0, backgroundSquares = 0;

@@ -41,9 +41,7 @@ std::vector<std::string> studyWarnings(const VisibilityStudy& study, const Scene
     const std::vector<Observer>& eyes = study.observers();
     for (const StudySign& s : study.signs()) {
         const Sign& sign = s.sign;
-        const bool seen = std::any_of(eyes.begin(), eyes.end(), [&](const Observer& o) {
-            return glm::dot(sign.shape.normal, o.eye - sign.centre) > 0;
-        });
+        const bool seen = std::any_of(eyes.begin(), eyes.end(), [&](const Observer& o) { return facing(sign, o.eye); });
         const dvec3& n = sign.shape.normal;
         if (!seen)
             out.push_back("sign '" + sign.name + "' faces away from every eye (its front faces (" + std::to_string(n.x) +
