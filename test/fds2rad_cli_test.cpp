@@ -73,6 +73,15 @@ TEST(Fds2rad, BadInputIsNamedAndWritesNothing) {
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, "fds2rad: bad_signs.txt:1: sign 'exit': its front has no direction\n");
     EXPECT_FALSE(std::filesystem::exists(scratch / "list.txt"));
+    std::ofstream(scratch / "materials.txt") << "wall 0.5\nfloor 0.2 0.3\n";
+    r = brume_test::runBrume("fds2rad -m materials.txt case.fds", scratch);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "fds2rad: materials.txt:2: expected 'SURF_ID r g b' or 'SURF_ID rho'\n");
+    std::ofstream(scratch / "materials.txt") << "wall 1.5\n";
+    r = brume_test::runBrume("fds2rad -m materials.txt case.fds", scratch);
+    EXPECT_EQ(r.err, "fds2rad: materials.txt:1: a reflectance is between 0 and 1\n");
+    EXPECT_EQ(r.out, "");
     r = brume_test::runBrume("fds2rad -S list.txt case.fds", scratch);
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("-S: the sign list comes from signs given by -s"), std::string::npos) << r.err;

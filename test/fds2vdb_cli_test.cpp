@@ -124,6 +124,12 @@ TEST(Fds2vdb, RefusesInstantsOutsideTheFramesBeforeWritingAnything) {
     Output missing = brume_test::runBrume("fds2vdb nowhere.smv", dir);
     EXPECT_EQ(missing.status, 1);
     EXPECT_EQ(missing.err.rfind("fds2vdb: nowhere.smv", 0), 0u) << missing.err;
+    for (const char* layer : {"2,1", "1", "1,x"}) {
+        Output bad = brume_test::runBrume("fds2vdb -l " + std::string(layer) + " '" + smv + "'", dir);
+        EXPECT_NE(bad.status, 0) << layer;
+        EXPECT_EQ(bad.out, "") << layer;
+        EXPECT_NE(bad.err.find("-l"), std::string::npos) << bad.err;
+    }
 }
 
 }  // namespace

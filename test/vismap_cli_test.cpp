@@ -381,6 +381,8 @@ TEST_F(Vismap, BadInputIsNamedAndWritesNothing) {
              {"-wp route.txt", "no signs (-S)"},
              {"-S bad_signs.txt -wp route.txt -vr 0", "-vr: at least one ray"},
              {"-S bad_signs.txt -wp route.txt -vp 0", "-vp: at least one pass"},
+             {"-S bad_signs.txt -wp route.txt -vx 0", "-vx: a distance > 0"},
+             {"-S bad_signs.txt -wp route.txt -vs -1", "-vs: a distance >= 0"},
              {"-S bad_signs.txt -wp route.txt -i", "-i: a study traces the light that reaches the eye"}}) {
         r = error(options, "sign emitting\n");
         EXPECT_NE(r.status, 0) << options;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <fstream>
 
 #include "fds/testing.h"
@@ -126,6 +128,18 @@ TEST(SmvIndex, MalformedIndexesNameTheLine) {
     EXPECT_NE(message("CHID\n x\n").find("no GRID"), std::string::npos);
     EXPECT_NE(message(replaced("    2    1    1    0", "    2    x")).find("bad.smv:10: expected 3 numbers"),
               std::string::npos);
+    // A Plot3D entry: its time comes from the file's name, which must give one; its five quantities follow.
+    std::string five;
+    for (int q = 0; q < 5; ++q) five += " Q" + std::to_string(q) + "\n q\n u\n";
+    SmvIndex index = readSmv(written("pl3d.smv", s + "PL3D        5.3     1\n tiny_1_5p03.q\n" + five));
+    ASSERT_EQ(std::count_if(index.files.begin(), index.files.end(),
+                            [](const FdsFile& f) { return f.kind == FdsFile::Kind::Plot3d; }),
+              5);
+    EXPECT_EQ(index.files.back().time, 5.03);
+    EXPECT_EQ(index.files.back().block, 4);
+    EXPECT_EQ(index.files.back().quantity, "Q4");
+    EXPECT_NE(message(s + "PL3D        5.3     1\n tiny_1.q\n" + five).find("does not give its time"), std::string::npos);
+    EXPECT_NE(message(s + "PL3D        5.3     1\n tiny_1_5p03.q\n Q0\n").find("the file ends before"), std::string::npos);
     EXPECT_THROW(readSmv("/nonexistent/case.smv"), Error);
 }
 
