@@ -73,15 +73,7 @@ void writeHeader(const Scene& scene, const std::vector<std::string>& command, co
     if (writer.components() > 0) h += "NCOMP=" + std::to_string(writer.components()) + "\n";
     for (const std::string& line : color.headerLines()) h += line + "\n";
     if (format == 'f' || format == 'd') h += std::string("BigEndian=") + (std::endian::native == std::endian::big ? "1" : "0") + "\n";
-    h += "FORMAT=" + writer.formatName();
-    // Binary values start aligned in a file, as Radiance does it (not on pipes, which cannot tell where).
-    long at = std::ftell(stdout);
-    int align = format == 'f' ? 4 : format == 'd' ? 8 : 0;
-    if (align && at >= 0) {
-        int r = int((at + long(h.size()) + 2) % align);
-        if (r) h += std::string(align - r, ' ');
-    }
-    h += "\n\n";
+    endHeader(h, writer.formatName(), stdout);
     std::fputs(h.c_str(), stdout);
 }
 

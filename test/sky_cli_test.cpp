@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "same_words.h"
 
 namespace {
 
@@ -26,38 +27,6 @@ using brume_test::slurp;
 Output run(const std::string& commandLine) {
     return brume_test::runCaptured("PATH=" + std::string(BRUME_BIN_DIR) + ":$PATH " + commandLine,
                                    brume_test::scratchDir("sky"));
-}
-
-std::vector<std::string> words(const std::string& text) {
-    std::istringstream in(text);
-    std::vector<std::string> w;
-    for (std::string s; in >> s;) w.push_back(s);
-    return w;
-}
-
-// One unit of the last digit printed in `word` ("4.907e+06" → 1e3, "0.041013" → 1e-6), or 0 when the
-// word is not a number.
-double lastDigitUnit(const std::string& word) {
-    char* end;
-    std::strtod(word.c_str(), &end);
-    if (end != word.c_str() + word.size() || word.find_first_of("0123456789") == std::string::npos) return 0;
-    size_t e = word.find_first_of("eE"), dot = word.find('.');
-    int decimals = dot == std::string::npos ? 0 : int((e == std::string::npos ? word.size() : e) - dot - 1);
-    int exponent = e == std::string::npos ? 0 : std::stoi(word.substr(e + 1));
-    return std::pow(10.0, exponent - decimals);
-}
-
-// Same words in the same order; numbers may differ by one unit of their last printed digit.
-void expectSameSceneText(const std::string& brume, const std::string& radiance, const std::string& what) {
-    std::vector<std::string> b = words(brume), r = words(radiance);
-    ASSERT_EQ(b.size(), r.size()) << what << "\nBrume:\n" << brume << "Radiance:\n" << radiance;
-    for (size_t i = 0; i < b.size(); ++i) {
-        double unit = lastDigitUnit(r[i]);
-        if (unit > 0 && lastDigitUnit(b[i]) > 0)
-            EXPECT_LE(std::abs(std::stod(b[i]) - std::stod(r[i])), 1.01 * unit) << what << ": word " << i << " " << b[i] << " vs " << r[i];
-        else
-            EXPECT_EQ(b[i], r[i]) << what << ": word " << i;
-    }
 }
 
 }  // namespace
@@ -80,7 +49,7 @@ TEST(SkyCli, OutputMatchesRadianceToPrintedPrecision) {
         ASSERT_EQ(brume.status, 0) << line << "\n" << brume.err;
         std::string radiance = slurp(fs::path(BRUME_TEST_DATA) / "sky" / "radiance" / name);
         ASSERT_FALSE(radiance.empty()) << name;
-        expectSameSceneText(brume.out, radiance, line);
+        brume_test::expectSameWords(brume.out, radiance, line);
     }
     EXPECT_GE(n, 16);
 }

@@ -178,20 +178,14 @@ int run(int argc, char** argv) {
     setProgramName(argv[0]);
     Options o;
     OptionTable table = makeTable(o);
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) throw UsageError("no view options or picture", kUsage + table.usage());
-    size_t first;
-    try {
-        first = table.parse(args);
-    } catch (const Error& e) {
-        throw UsageError(e.what(), kUsage + table.usage());
-    }
-    if (args.size() - first > 2) throw UsageError("too many arguments", kUsage + table.usage());
-    bool picture = first < args.size();
+    if (argc < 2) throw UsageError("no view options or picture", kUsage + table.usage());
+    std::vector<std::string> args = operandsAfterOptions(table, argc, argv, kUsage);
+    if (args.size() > 2) throw UsageError("too many arguments", kUsage + table.usage());
+    bool picture = !args.empty();
     std::vector<float> depth;
     if (picture) {
-        if (!readViewFile(args[first], o.view, &o.resolution)) throw Error(args[first] + ": no view in picture");
-        if (!o.dimensionsOnly && first + 1 < args.size()) depth = readDepth(args[first + 1], o.resolution);
+        if (!readViewFile(args[0], o.view, &o.resolution)) throw Error(args[0] + ": no view in picture");
+        if (!o.dimensionsOnly && args.size() > 1) depth = readDepth(args[1], o.resolution);
     }
     o.view.validate();
     if (!picture) normalizeResolution(o.view.aspect(), o.pixelAspect, o.resolution.width, o.resolution.height);

@@ -17,18 +17,18 @@ int clearnessBin(double clearness) {
 }
 
 // Perez et al. (1993), table 1: for each clearness bin, for a..e, the four coefficients of
-// x = x1 + x2 Z + delta (x3 + x4 Z). Kept in single precision as gendaylit keeps them: the coefficients it
-// prints with six decimals show the difference. Float literals: GCC with -frounding-math (CGAL's flag)
-// miscompiles double literals narrowed to float in a constant array.
-constexpr float kLuminanceCoefficients[8][5][4] = {
-    {{1.3525f, -0.2576f, -0.2690f, -1.4366f}, {-0.7670f, 0.0007f, 1.2734f, -0.1233f}, {2.8000f, 0.6004f, 1.2375f, 1.000f}, {1.8734f, 0.6297f, 0.9738f, 0.2809f}, {0.0356f, -0.1246f, -0.5718f, 0.9938f}},
-    {{-1.2219f, -0.7730f, 1.4148f, 1.1016f}, {-0.2054f, 0.0367f, -3.9128f, 0.9156f}, {6.9750f, 0.1774f, 6.4477f, -0.1239f}, {-1.5798f, -0.5081f, -1.7812f, 0.1080f}, {0.2624f, 0.0672f, -0.2190f, -0.4285f}},
-    {{-1.1000f, -0.2515f, 0.8952f, 0.0156f}, {0.2782f, -0.1812f, -4.5000f, 1.1766f}, {24.7219f, -13.0812f, -37.7000f, 34.8438f}, {-5.0000f, 1.5218f, 3.9229f, -2.6204f}, {-0.0156f, 0.1597f, 0.4199f, -0.5562f}},
-    {{-0.5484f, -0.6654f, -0.2672f, 0.7117f}, {0.7234f, -0.6219f, -5.6812f, 2.6297f}, {33.3389f, -18.3000f, -62.2500f, 52.0781f}, {-3.5000f, 0.0016f, 1.1477f, 0.1062f}, {0.4659f, -0.3296f, -0.0876f, -0.0329f}},
-    {{-0.6000f, -0.3566f, -2.5000f, 2.3250f}, {0.2937f, 0.0496f, -5.6812f, 1.8415f}, {21.0000f, -4.7656f, -21.5906f, 7.2492f}, {-3.5000f, -0.1554f, 1.4062f, 0.3988f}, {0.0032f, 0.0766f, -0.0656f, -0.1294f}},
-    {{-1.0156f, -0.3670f, 1.0078f, 1.4051f}, {0.2875f, -0.5328f, -3.8500f, 3.3750f}, {14.0000f, -0.9999f, -7.1406f, 7.5469f}, {-3.4000f, -0.1078f, -1.0750f, 1.5702f}, {-0.0672f, 0.4016f, 0.3017f, -0.4844f}},
-    {{-1.0000f, 0.0211f, 0.5025f, -0.5119f}, {-0.3000f, 0.1922f, 0.7023f, -1.6317f}, {19.0000f, -5.0000f, 1.2438f, -1.9094f}, {-4.0000f, 0.0250f, 0.3844f, 0.2656f}, {1.0468f, -0.3788f, -2.4517f, 1.4656f}},
-    {{-1.0500f, 0.0289f, 0.4260f, 0.3590f}, {-0.3250f, 0.1156f, 0.7781f, 0.0025f}, {31.0625f, -14.5000f, -46.1148f, 55.3750f}, {-7.2312f, 0.4050f, 13.3500f, 0.6234f}, {1.5000f, -0.6426f, 1.8564f, 0.5636f}},
+// x = x1 + x2 Z + delta (x3 + x4 Z). gendaylit rounds them to single precision (the coefficients it prints
+// with six decimals show it), at run time: GCC with -frounding-math (CGAL's flag) miscompiles double
+// literals narrowed to float in a constant array.
+constexpr double kLuminanceCoefficients[8][5][4] = {
+    {{1.3525, -0.2576, -0.2690, -1.4366}, {-0.7670, 0.0007, 1.2734, -0.1233}, {2.8000, 0.6004, 1.2375, 1.000}, {1.8734, 0.6297, 0.9738, 0.2809}, {0.0356, -0.1246, -0.5718, 0.9938}},
+    {{-1.2219, -0.7730, 1.4148, 1.1016}, {-0.2054, 0.0367, -3.9128, 0.9156}, {6.9750, 0.1774, 6.4477, -0.1239}, {-1.5798, -0.5081, -1.7812, 0.1080}, {0.2624, 0.0672, -0.2190, -0.4285}},
+    {{-1.1000, -0.2515, 0.8952, 0.0156}, {0.2782, -0.1812, -4.5000, 1.1766}, {24.7219, -13.0812, -37.7000, 34.8438}, {-5.0000, 1.5218, 3.9229, -2.6204}, {-0.0156, 0.1597, 0.4199, -0.5562}},
+    {{-0.5484, -0.6654, -0.2672, 0.7117}, {0.7234, -0.6219, -5.6812, 2.6297}, {33.3389, -18.3000, -62.2500, 52.0781}, {-3.5000, 0.0016, 1.1477, 0.1062}, {0.4659, -0.3296, -0.0876, -0.0329}},
+    {{-0.6000, -0.3566, -2.5000, 2.3250}, {0.2937, 0.0496, -5.6812, 1.8415}, {21.0000, -4.7656, -21.5906, 7.2492}, {-3.5000, -0.1554, 1.4062, 0.3988}, {0.0032, 0.0766, -0.0656, -0.1294}},
+    {{-1.0156, -0.3670, 1.0078, 1.4051}, {0.2875, -0.5328, -3.8500, 3.3750}, {14.0000, -0.9999, -7.1406, 7.5469}, {-3.4000, -0.1078, -1.0750, 1.5702}, {-0.0672, 0.4016, 0.3017, -0.4844}},
+    {{-1.0000, 0.0211, 0.5025, -0.5119}, {-0.3000, 0.1922, 0.7023, -1.6317}, {19.0000, -5.0000, 1.2438, -1.9094}, {-4.0000, 0.0250, 0.3844, 0.2656}, {1.0468, -0.3788, -2.4517, 1.4656}},
+    {{-1.0500, 0.0289, 0.4260, 0.3590}, {-0.3250, 0.1156, 0.7781, 0.0025}, {31.0625, -14.5000, -46.1148, 55.3750}, {-7.2312, 0.4050, 13.3500, 0.6234}, {1.5000, -0.6426, 1.8564, 0.5636}},
 };
 
 // Perez et al. (1990), table 4: a, b, c, d per clearness bin.
@@ -92,11 +92,16 @@ double directEfficacy(const PerezSkyCondition& sky, double zenith, double water)
 
 // Perez et al. (1993), eq. 6 and table 1; in the first bin c and d follow eq. 7 and 8. gendaylit raises
 // delta to 0.2 in the bins between 1.065 and 2.8.
-PerezCoefficients perezCoefficients(double z, const PerezSkyCondition& sky) {
+PerezCoefficients perezCoefficients(double z, const PerezSkyCondition& sky, TablePrecision precision) {
     double eps = sky.clearness, delta = sky.brightness;
     if (eps > 1.065 && eps < 2.8) delta = std::max(delta, 0.2);
     int bin = clearnessBin(eps);
-    const auto& x = kLuminanceCoefficients[bin];
+    double x[5][4];
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double v = kLuminanceCoefficients[bin][i][j];
+            x[i][j] = precision == TablePrecision::Single ? double(float(v)) : v;
+        }
     auto linear = [&](int i) { return x[i][0] + x[i][1] * z + delta * (x[i][2] + x[i][3] * z); };
     if (bin > 0) return {linear(0), linear(1), linear(2), linear(3), linear(4)};
     return {linear(0), linear(1), std::exp(std::pow(delta * (x[2][0] + x[2][1] * z), x[2][2])) - x[2][3],

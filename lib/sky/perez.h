@@ -36,7 +36,11 @@ double directEfficacy(const PerezSkyCondition& sky, double zenith, double water)
 struct PerezCoefficients {
     double a, b, c, d, e;
 };
-PerezCoefficients perezCoefficients(double sunZenith, const PerezSkyCondition& sky);
+// gendaylit keeps the table's coefficients in single precision, gendaymtx in double: each program's values
+// follow from its own.
+enum class TablePrecision { Single, Double };
+PerezCoefficients perezCoefficients(double sunZenith, const PerezSkyCondition& sky,
+                                    TablePrecision precision = TablePrecision::Single);
 
 // Perez et al. (1993), eq. 1: luminance relative to an arbitrary reference at zenith angle zeta and angle
 // gamma from the sun (radians).

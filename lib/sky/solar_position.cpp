@@ -9,13 +9,6 @@ namespace {
 // The angle (or time) r brought into [0, period).
 double wrap(double r, double period) { return r - period * std::floor(r / period); }
 
-// IES Lighting Handbook (1981): hours from local standard time to solar time, the equation of time
-// plus four minutes per degree between the standard meridian and the site.
-double iesSolarTimeCorrection(int day, const Site& site) {
-    return 0.170 * std::sin(4 * kPi / 373 * (day - 80)) - 0.129 * std::sin(2 * kPi / 355 * (day - 8)) +
-           12 / kPi * (site.meridian - site.longitude);
-}
-
 // Days since noon UT on January 1st, 2000 (J2000.0) at a local standard time, counted as Radiance counts
 // them: leap years every fourth year from 1949 on.
 double daysSinceJ2000(const LocalTime& t, const Site& site) {
@@ -58,6 +51,11 @@ int dayOfYear(int month, int day) {
 
 // IES Lighting Handbook (1981): declination as a sine over the year, 23.45° at the June solstice.
 double iesDeclination(int day) { return 0.4093 * std::sin(2 * kPi / 365 * (day - 81)); }
+
+double iesSolarTimeCorrection(int day, const Site& site) {
+    return 0.170 * std::sin(4 * kPi / 373 * (day - 80)) - 0.129 * std::sin(2 * kPi / 355 * (day - 8)) +
+           12 / kPi * (site.meridian - site.longitude);
+}
 
 SunDeclination sunDeclination(const LocalTime& t, const Site& site) {
     if (t.year != 0) {

@@ -45,6 +45,9 @@ SunDeclination sunDeclination(const LocalTime& time, const Site& site);
 
 // IES Lighting Handbook: declination (radians) on a day of the year.
 double iesDeclination(int dayOfYear);
+// IES Lighting Handbook (1981): hours from local standard time to solar time on a day of the year, the
+// equation of time plus four minutes per degree between the standard meridian and the site.
+double iesSolarTimeCorrection(int dayOfYear, const Site& site);
 
 // Altitude and azimuth of the sun for a declination and a solar time at the site's latitude.
 SunAngles sunAngles(double declination, double solarTime, const Site& site);

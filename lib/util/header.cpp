@@ -33,6 +33,17 @@ std::string softwareAndDates() {
     return std::string("SOFTWARE= Brume ") + BRUME_VERSION + "\nCAPDATE= " + local + "\nGMT= " + gmt + "\n";
 }
 
+void endHeader(std::string& header, const std::string& format, std::FILE* out) {
+    header += "FORMAT=" + format;
+    int align = format == "float" ? 4 : format == "double" ? 8 : 0;
+    long at = std::ftell(out);
+    if (align && at >= 0) {
+        int r = int((at + long(header.size()) + 2) % align);
+        if (r) header += std::string(align - r, ' ');
+    }
+    header += "\n\n";
+}
+
 bool isHeaderVariable(std::string_view line, std::string_view name) { return line.substr(0, name.size()) == name; }
 
 double headerProduct(const std::vector<std::string>& lines, std::string_view name) {

@@ -1,6 +1,7 @@
 // Radiance data-stream headers: "#?RADIANCE", the command that made the stream, SOFTWARE=, dates,
 // FORMAT=, ended by an empty line.
 #pragma once
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,11 @@ std::string quotedWord(const std::string& word);
 std::string commandLine(const std::vector<std::string>& words);
 // "SOFTWARE= Brume x.y", "CAPDATE= ...", "GMT= ..." lines.
 std::string softwareAndDates();
+
+// Ends `header` as Radiance ends a data stream's header: "FORMAT=format", padded with spaces after binary
+// floats or doubles so that the data start aligned in a file (`out`'s position tells where the header
+// starts; a pipe has none, and gets no padding), and the empty line.
+void endHeader(std::string& header, const std::string& format, std::FILE* out);
 
 // Whether a header line sets the variable `name` (given with its '=', as "VIEW="), by Radiance's prefix rule.
 bool isHeaderVariable(std::string_view line, std::string_view name);

@@ -217,4 +217,15 @@ void expandResponseFiles(std::vector<std::string>& args) {
     }
 }
 
+std::vector<std::string> operandsAfterOptions(const OptionTable& table, int argc, char** argv, const std::string& usage) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    size_t first;
+    try {
+        first = table.parse(args);
+    } catch (const Error& e) {
+        throw UsageError(e.what(), usage + table.usage());
+    }
+    return {args.begin() + first, args.end()};
+}
+
 }  // namespace brume

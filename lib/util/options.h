@@ -62,6 +62,10 @@ private:
     std::vector<Option> options_;
 };
 
+// The words of argv after the options `table` parses (and applies); a mistake in them is a UsageError that
+// shows `usage` and the table's options.
+std::vector<std::string> operandsAfterOptions(const OptionTable& table, int argc, char** argv, const std::string& usage);
+
 // Options holding one number, printed by -defaults as Radiance prints them ("%f" for reals).
 void addIntOption(OptionTable& table, const std::string& name, int& value, const std::string& help);
 void addRealOption(OptionTable& table, const std::string& name, double& value, const std::string& help);

@@ -1,0 +1,206 @@
+// The annual-daylight matrix tools as programs: gendaymtx, epw2wea, rmtxop and dctimestep against Radiance
+// 6.1's outputs (test/data/daymtx, made by its make_radiance_outputs.sh): small cases word for word, whole
+// years of the shared weather files by the CRC-32 of their binary data; and their errors.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+#include "same_words.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using brume_test::Output;
+using brume_test::slurp;
+
+const fs::path kData = fs::path(BRUME_TEST_DATA) / "daymtx";
+const fs::path kWeather = fs::path(BRUME_SHARED_DATA) / "weather";
+
+// Runs a command line in `dir` with Brume's programs first on PATH (no globbing: rmtxop's '*').
+Output runIn(const fs::path& dir, const std::string& line) {
+    return brume_test::runCaptured("set -f; cd '" + dir.string() + "' && PATH='" + std::string(BRUME_BIN_DIR) + "':\"$PATH\" " + line,
+                                   brume_test::scratchDir("daymtx"));
+}
+
+struct Split {
+    std::vector<std::string> header;  // the lines that say what the data are
+    std::string data;
+};
+
+// A header's lines but the ones that differ by program and run (the command, software and dates).
+Split split(const std::string& text) {
+    Split s;
+    if (text.rfind("#?", 0) != 0) {
+        s.data = text;
+        return s;
+    }
+    size_t end = text.find("\n\n");
+    std::istringstream lines(text.substr(0, end));
+    for (std::string line; std::getline(lines, line);) {
+        while (!line.empty() && line.back() == ' ') line.pop_back();  // FORMAT= padding
+        bool command = line.rfind("gendaymtx", 0) == 0 || line.rfind("rmtxop", 0) == 0 || line.rfind("dctimestep", 0) == 0;
+        bool stamp = line.rfind("SOFTWARE=", 0) == 0 || line.rfind("CAPDATE=", 0) == 0 || line.rfind("GMT=", 0) == 0;
+        if (!command && !stamp && line.rfind("#?", 0) != 0) s.header.push_back(line);
+    }
+    s.data = text.substr(end + 2);
+    return s;
+}
+
+// The CRC-32 and length of what follows a header.
+std::string dataFingerprint(const std::string& bytes) {
+    size_t end = bytes.find("\n\n");
+    if (end == std::string::npos) return "no header";
+    const auto* d = reinterpret_cast<const Bytef*>(bytes.data() + end + 2);
+    size_t n = bytes.size() - end - 2;
+    char out[64];
+    std::snprintf(out, sizeof out, "%08lx %zu", crc32(0, d, uInt(n)), n);
+    return out;
+}
+
+}  // namespace
+
+// Every command line of commands.txt: gendaymtx's options (-d, -s, -O1, -r, -5, -A, -u, -i, -g/-c, -h, -D -n)
+// on two days of Chicago's year, rmtxop's products, sums, element-wise products and quotients, transposes,
+// transforms and scales, dctimestep's product. Radiance's to its printed precision, but dctimestep's sums,
+// which Radiance's AVX2 code takes in another order than its own rmtxop (7e-7 apart): 2e-6 there.
+TEST(DaymtxCli, OutputMatchesRadianceToPrintedPrecision) {
+    for (const char* program : {"gendaymtx", "rmtxop", "dctimestep"})
+        ASSERT_TRUE(fs::exists(fs::path(BRUME_BIN_DIR) / program)) << program;
+    std::ifstream commands(kData / "commands.txt");
+    std::string line;
+    int n = 0;
+    while (std::getline(commands, line)) {
+        char name[16];
+        std::snprintf(name, sizeof name, "%02d.txt", ++n);
+        Output brume = runIn(kData, line);
+        ASSERT_EQ(brume.status, 0) << line << "\n" << brume.err;
+        Split b = split(brume.out), r = split(slurp(kData / "radiance" / name));
+        ASSERT_FALSE(r.data.empty()) << name;
+        EXPECT_EQ(b.header, r.header) << line;
+        brume_test::expectSameWords(b.data, r.data, line, line.rfind("dctimestep", 0) == 0 ? 2e-6 : 0);
+    }
+    EXPECT_EQ(n, 20);
+}
+
+// epw2wea writes Radiance's .wea byte for byte: chicago48.wea is Radiance's header and two days of it.
+TEST(DaymtxCli, Epw2weaWritesRadiancesWea) {
+    if (!fs::exists(kWeather / "chicago.epw")) GTEST_SKIP() << "no shared weather data";
+    Output r = runIn(kData, "epw2wea '" + (kWeather / "chicago.epw").string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::istringstream expected(slurp(kData / "chicago48.wea")), got(r.out);
+    std::vector<std::string> all;
+    for (std::string l; std::getline(got, l);) all.push_back(l);
+    ASSERT_EQ(all.size(), 8766u);
+    std::string l;
+    for (int i = 0; i < 6 && std::getline(expected, l); ++i) EXPECT_EQ(all[i], l);
+    // June 21st is day 172: records 171 × 24 on; December 21st, day 355.
+    for (int i = 0; i < 48 && std::getline(expected, l); ++i) EXPECT_EQ(all[6 + (i < 24 ? 171 * 24 + i : 354 * 24 + i - 24)], l);
+}
+
+// Whole years: Brume's epw2wea, then gendaymtx -of, give Radiance's bytes (Tregenza's and Reinhart's
+// patches, the sun alone at -m 4, the sky alone, solar units, a rotation, the 5-phase sun, the mean sky,
+// sun hours only, a year with its times in UTC, an EPW file read directly with its dew points).
+TEST(DaymtxCli, WholeYearsMatchRadianceByteForByte) {
+    if (!fs::exists(kWeather / "chicago.epw")) GTEST_SKIP() << "no shared weather data";
+    fs::path scratch = brume_test::scratchDir("daymtx_years");
+    ASSERT_EQ(runIn(scratch, "epw2wea '" + (kWeather / "chicago.epw").string() + "' chicago.wea").status, 0);
+    ASSERT_EQ(runIn(scratch, "epw2wea '" + (kWeather / "tmy_45.000_8.000_2005_2023.epw").string() + "' tmy45.wea").status, 0);
+    fs::copy_file(kWeather / "chicago.epw", scratch / "chicago.epw", fs::copy_options::overwrite_existing);
+    std::ifstream list(kData / "fingerprints.txt");
+    std::string line;
+    int n = 0;
+    while (std::getline(list, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::string crc, bytes;
+        std::istringstream words(line);
+        words >> crc >> bytes;
+        std::string command;
+        std::getline(words >> std::ws, command);
+        Output r = runIn(scratch, command.insert(command.rfind(' '), " -of"));
+        ASSERT_EQ(r.status, 0) << command << "\n" << r.err;
+        EXPECT_EQ(dataFingerprint(r.out), crc + " " + bytes) << command;
+        ++n;
+    }
+    EXPECT_EQ(n, 12);
+}
+
+// Bad input: the file and line, status 1, nothing on the standard output.
+TEST(DaymtxCli, BadInputIsNamedAndWritesNothing) {
+    fs::path scratch = brume_test::scratchDir("daymtx_errors");
+    std::ofstream(scratch / "short.wea") << "place X_Y\nlatitude 40\nlongitude 80\n";
+    std::ofstream(scratch / "units.wea") << "place X_Y\nlatitude 40\nlongitude 80\ntime_zone 75\nsite_elevation 0\nweather_data_file_units 7\n";
+    std::ofstream(scratch / "record.wea") << "place X_Y\nlatitude 40\nlongitude 80\ntime_zone 75\nsite_elevation 0\n"
+                                             "weather_data_file_units 1\n6 21 12.5 800 100\n6 21 13.5 eight 100\n";
+    std::ofstream(scratch / "date.wea") << "place X_Y\nlatitude 40\nlongitude 80\ntime_zone 75\nsite_elevation 0\n"
+                                           "weather_data_file_units 1\n2 30 12.5 800 100\n";
+    std::ofstream(scratch / "latitude.wea") << "place X_Y\nlatitude 95\nlongitude 80\ntime_zone 75\nsite_elevation 0\nweather_data_file_units 1\n";
+    std::ofstream(scratch / "a.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=2\nNCOMP=1\nFORMAT=ascii\n\n1 2 3\n";
+    std::ofstream(scratch / "b.mtx") << "#?RADIANCE\nNROWS=3\nNCOLS=1\nNCOMP=1\nFORMAT=ascii\n\n1 2 3\n";
+    std::ofstream(scratch / "c.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=2\nNCOMP=1\nFORMAT=ascii\n\n1 2 3 4\n";
+    std::ofstream(scratch / "f.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=2\nNCOMP=1\nFORMAT=float\n\n" << std::string(12, '\0');
+    std::ofstream(scratch / "d.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=1\nNCOMP=3\nFORMAT=ascii\n\n1 2 3\n";
+    std::ofstream(scratch / "x.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=2\nNCOMP=1\nFORMAT=ascii\n\n1 1e999\n";
+    struct Case {
+        const char* command;
+        const char* message;
+    };
+    for (Case c : {Case{"gendaymtx short.wea", "gendaymtx: short.wea:3: .wea header ends before its time_zone line"},
+                   Case{"gendaymtx units.wea", "gendaymtx: units.wea:6: weather_data_file_units must be 1, 2 or 3"},
+                   Case{"gendaymtx record.wea", "gendaymtx: record.wea:8: bad direct value 'eight'"},
+                   Case{"gendaymtx date.wea", "gendaymtx: date.wea:7: impossible date or time"},
+                   Case{"gendaymtx latitude.wea", "gendaymtx: latitude.wea:5: latitude outside -90..90"},
+                   Case{"gendaymtx < /dev/null", "gendaymtx: <stdin>: empty weather tape"},
+                   Case{"gendaymtx -m 0 x.wea", "gendaymtx: -m must be 1 to 32"},
+                   Case{"gendaymtx -oq x.wea", "gendaymtx: bad output format -oq"},
+                   Case{"gendaymtx nothere.wea", "gendaymtx: cannot open weather tape 'nothere.wea'"},
+                   Case{"epw2wea record.wea", "epw2wea: record.wea: this does not seem to be an EPW file"},
+                   Case{"epw2wea", "epw2wea: wrong number of arguments"},
+                   Case{"rmtxop a.mtx", "rmtxop: a.mtx: 3 values for a 2x2x1 matrix"},
+                   Case{"rmtxop c.mtx b.mtx", "rmtxop: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
+                   Case{"rmtxop c.mtx + b.mtx", "rmtxop: element by element, a 2x2x1 matrix and a 3x1x1 one do not match"},
+                   Case{"rmtxop f.mtx", "rmtxop: f.mtx: truncated: 3 values for a 2x2x1 matrix"},
+                   Case{"rmtxop x.mtx", "rmtxop: x.mtx: value out of range at element 1"},
+                   Case{"rmtxop c.mtx +", "rmtxop: an operator with no matrix after it"},
+                   Case{"rmtxop -c 1 2 d.mtx", "rmtxop: 2 component weights for a matrix of 3 components"},
+                   Case{"rmtxop -c XYZ c.mtx", "rmtxop: symbolic components (-c XYZ) need an RGB matrix"},
+                   Case{"dctimestep c.mtx b.mtx", "dctimestep: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
+                   Case{"dctimestep 'c%03d.hdr' b.mtx", "dctimestep: component pictures"}}) {
+        Output r = runIn(scratch, c.command);
+        EXPECT_EQ(r.status, 1) << c.command;
+        EXPECT_TRUE(r.out.empty()) << c.command << "\n" << r.out.substr(0, 200);
+        EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.command << "\n" << r.err;
+    }
+}
+
+// A record without the irradiances the sky needs (EPW's 9999) is an error naming it, not a dark hour.
+TEST(DaymtxCli, MissingIrradianceIsAnError) {
+    if (!fs::exists(kWeather / "chicago.epw")) GTEST_SKIP() << "no shared weather data";
+    fs::path scratch = brume_test::scratchDir("daymtx_missing");
+    std::ifstream in(kWeather / "chicago.epw");
+    std::ofstream out(scratch / "gap.epw");
+    std::string line;
+    for (int i = 1; std::getline(in, line) && i <= 20; ++i) {
+        if (i == 20) {  // the record of 1 January, 12:00: its direct normal irradiance (field 15) missing
+            std::vector<std::string> f;
+            std::istringstream fields(line);
+            for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+            f[14] = "9999";
+            line.clear();
+            for (size_t k = 0; k < f.size(); ++k) line += (k ? "," : "") + f[k];
+        }
+        out << line << "\n";
+    }
+    out.close();
+    Output r = runIn(scratch, "gendaymtx gap.epw");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_EQ(r.err.rfind("gendaymtx: gap.epw:20: missing required irradiances", 0), 0u) << r.err;
+}
