@@ -1,5 +1,6 @@
 // epw2wea: an EnergyPlus weather file as DAYSIM's .wea (direct normal and diffuse horizontal irradiance at
 // the middle of each hour), as Radiance's epw2wea writes it (see man/epw2wea.1).
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -51,7 +52,7 @@ int run(int argc, char** argv) {
         // EPW's missing-value code, where the file has one.
         double direct = r->direct.value_or(9999), diffuse = r->diffuse.value_or(9999);
         std::fprintf(out, "%d %d %.3f %.0f %.0f", r->month, r->day, r->hour, float(direct), float(diffuse));
-        if (extra) std::fprintf(out, " %.3f %.1f", float(r->aerosolDepth.value_or(0.999)), int(r->skyCover.value_or(99)) / 10.0);
+        if (extra) std::fprintf(out, " %.3f %.1f", float(r->aerosolDepth.value_or(0.999)), std::trunc(r->skyCover.value_or(99)) / 10);
         std::fputc('\n', out);
     }
     if (file && std::fflush(file.get()) != 0) throw Error(args[1] + ": write error");

@@ -8,6 +8,7 @@
 
 #include "fuzz/exercise_cache_file.h"
 #include "fuzz/exercise_cal.h"
+#include "fuzz/exercise_daylight.h"
 #include "fuzz/exercise_fds_input.h"
 #include "fuzz/exercise_font.h"
 #include "fuzz/exercise_pattern_data.h"
@@ -140,4 +141,8 @@ TEST(FuzzCorpus, CacheFilesLoadOrAreRefusedCleanly) {
 TEST(FuzzCorpus, FdsInputsAndSignPlacementsAreReadOrRefusedCleanly) {
     replay("corpus_fds", [](std::istream& in) { fuzz::exerciseFdsInput(in); });
     replay("corpus_signs", [](std::istream& in) { fuzz::exerciseSignPlacements(in); });
+}
+
+TEST(FuzzCorpus, WeatherTapesAndMatricesAreReadOrRefusedCleanly) {
+    for (const std::string& input : corpus("corpus_daylight")) EXPECT_TRUE(exerciseDaylightInput(input)) << input.substr(0, 80);
 }

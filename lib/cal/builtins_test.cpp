@@ -68,6 +68,12 @@ TEST(CalBuiltins, ErfIsTheC99ErrorFunction) {
 
 TEST(CalBuiltins, RandDependsOnlyOnItsArgumentAndStaysInTheUnitInterval) {
     Calc calc;
+    // Radiance 6.1's rcalc -od: rand(3.5), rand(0), rand(-7.25), rand(1e6), rand(12345.678).
+    EXPECT_DOUBLE_EQ(calc("rand(3.5)"), 0.6137482334743254);
+    EXPECT_DOUBLE_EQ(calc("rand(0)"), 0.954473516496364);
+    EXPECT_DOUBLE_EQ(calc("rand(-7.25)"), 0.9067064882692648);
+    EXPECT_DOUBLE_EQ(calc("rand(1e6)"), 0.31236551299662096);
+    EXPECT_DOUBLE_EQ(calc("rand(12345.678)"), 0.23139812686713412);
     EXPECT_EQ(calc("rand(3.5)"), calc("rand(3.5)"));
     EXPECT_NE(calc("rand(3.5)"), calc("rand(4.5)"));
     EXPECT_EQ(calc("rand(0)"), calc("rand(-0)"));

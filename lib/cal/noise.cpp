@@ -114,6 +114,14 @@ double fractalNoise(double x, double y, double z) {
     return sum;
 }
 
-double hashRandom(double x) { return static_cast<double>(mix(bits(x)) >> 11) * 0x1p-53; }
+// Radiance's formula, so that patterns and bins (reinhartb.cal's jitter) that use rand() draw what they draw
+// in Radiance: the fraction of 1e5 over a fraction of a stretched x, shifted off zero.
+double hashRandom(double x) {
+    if (!std::isfinite(x)) return 0;
+    x *= 1 / (1 + x * x) + 2.71828182845904;
+    x += 0.785398163397447 - std::floor(x);
+    x = 1e5 / x;
+    return x - std::floor(x);
+}
 
 }  // namespace brume::cal

@@ -85,9 +85,11 @@ TEST(CalStandardLibrary, ChannelNamesAreRadiancesChannelNumbers) {
 }
 
 // Brume's own files: a user's RAYPATH (Radiance's library, say) would put other files of the same names first.
+// reinhart.cal wants MF from its user, as Radiance's does.
 TEST(CalStandardLibrary, EveryDefinitionOfEveryFileCompiles) {
     test::ScopedRayPath none(nullptr);
     Library library;
+    library.loadText("MF : 2;", "user.cal");
     Compiler compiler(library);
     for (const EmbeddedFile& file : embeddedCalFiles()) {
         Scope scope = library.loadFile(std::string(file.name));

@@ -17,6 +17,7 @@ namespace brume {
 namespace {
 
 constexpr long kMaxElements = 1L << 31;  // 8 GB of floats: refused before allocating
+constexpr int kMaxComponents = 1000;     // spectral bands, more than any spectrum has
 
 std::string readAll(std::FILE* f) {
     std::string bytes;
@@ -43,6 +44,12 @@ std::string inputBytes(const std::string& spec) {
     std::ostringstream all;
     all << in.rdbuf();
     return all.str();
+}
+
+// Values that overflow single precision (huge inputs, an exposure's scale, products) are refused, not written.
+void requireFinite(const Matrix& m, const std::string& what) {
+    for (float v : m.values)
+        if (!std::isfinite(v)) throw Error(what + ": a value overflows single precision");
 }
 
 struct Header {
@@ -74,7 +81,10 @@ Header parseHeader(const std::string& bytes, const std::string& name) {
         if (line.compare(0, 2, "#?") == 0) continue;
         if (line.compare(0, 6, "NROWS=") == 0) h.rows = headerCount(line, 6, name);
         else if (line.compare(0, 6, "NCOLS=") == 0) h.cols = headerCount(line, 6, name);
-        else if (line.compare(0, 6, "NCOMP=") == 0) h.comps = headerCount(line, 6, name);
+        else if (line.compare(0, 6, "NCOMP=") == 0) {
+            h.comps = headerCount(line, 6, name);
+            if (h.comps > kMaxComponents) throw Error(name + ": " + std::to_string(h.comps) + " components (at most " + std::to_string(kMaxComponents) + ")");
+        }
         else if (line.compare(0, 10, "BigEndian=") == 0) h.swap = (std::atoi(line.c_str() + 10) != 0) != (std::endian::native == std::endian::big);
         else if (line.compare(0, 9, "EXPOSURE=") == 0) h.exposure *= std::atof(line.c_str() + 9);
         else if (line.compare(0, 7, "FORMAT=") == 0) {
@@ -93,6 +103,8 @@ Header parseHeader(const std::string& bytes, const std::string& name) {
 
 // The rows from the number of elements when the header (or the caller) gave only the columns.
 void completeSize(Header& h, size_t elements, const std::string& name) {
+    if (elements > size_t(kMaxElements)) throw Error(name + ": matrix too large");
+    if (elements == 0) throw Error(name + ": no values");
     if (h.cols <= 0 && h.rows > 0 && elements % h.rows == 0) h.cols = int(elements / h.rows);
     if (h.cols <= 0) h.cols = int(std::min<size_t>(elements, size_t(1) << 30)), h.rows = 1;
     if (h.rows <= 0) {
@@ -129,10 +141,10 @@ template <typename T>
 Matrix binaryValues(const std::string& bytes, Header& h, const std::string& name) {
     size_t available = (bytes.size() - h.end) / sizeof(T);
     completeSize(h, available / h.comps, name);
-    Matrix m(h.rows, h.cols, h.comps);
-    if (m.values.size() > available)
+    if (size_t(h.rows) * h.cols * h.comps > available)  // before allocating what the header claims
         throw Error(name + ": truncated: " + std::to_string(available) + " values for a " + std::to_string(h.rows) + "x" + std::to_string(h.cols) +
                     "x" + std::to_string(h.comps) + " matrix");
+    Matrix m(h.rows, h.cols, h.comps);
     const char* p = bytes.data() + h.end;
     for (size_t i = 0; i < m.values.size(); ++i) {
         unsigned char b[sizeof(T)];
@@ -155,6 +167,7 @@ Matrix pictureValues(const std::string& bytes, const std::string& name) {
     for (size_t i = 0; i < m.values.size(); ++i) m.values[i] = float(p.pixels[i] / exposure);
     for (const std::string& line : p.header)
         if (line.compare(0, 9, "EXPOSURE=") != 0) m.info.push_back(line);
+    requireFinite(m, name);
     return m;
 }
 
@@ -193,6 +206,7 @@ Matrix parseMatrix(const std::string& bytes, const std::string& name, const Matr
                : format == MatrixFormat::Float ? binaryValues<float>(bytes, h, name)
                                                : binaryValues<double>(bytes, h, name);
     if (h.exposure != 1 && h.exposure > 0) scale(m, {1 / h.exposure});
+    requireFinite(m, name);
     m.info = std::move(h.info);
     return m;
 }
@@ -203,6 +217,7 @@ Matrix readMatrix(const std::string& spec, const MatrixShape& shape, MatrixForma
 
 void writeMatrix(std::FILE* out, const Matrix& m, MatrixFormat format, AsciiLayout layout,
                  const std::vector<std::string>& lines, bool header) {
+    requireFinite(m, "the result");
     if (format == MatrixFormat::Rgbe) {
         if (m.comps != 3) throw Error("a picture needs 3 components, not " + std::to_string(m.comps));
         Picture p;

@@ -36,7 +36,8 @@ Matrix parseMatrix(const std::string& bytes, const std::string& name, const Matr
 enum class AsciiLayout { Rmtxop, Dctimestep };
 
 // Writes the header (unless `header` is false): "#?RADIANCE", `lines` (the command and the like), the
-// matrix's info, its size, BigEndian= for binary values, FORMAT=; then the elements.
+// matrix's info, its size, BigEndian= for binary values, FORMAT=; then the elements. Throws Error, writing
+// nothing, where a value is not finite (an overflow).
 void writeMatrix(std::FILE* out, const Matrix& m, MatrixFormat format, AsciiLayout layout,
                  const std::vector<std::string>& lines, bool header = true);
 

@@ -1,5 +1,6 @@
 #include "sky/sky_patches.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sky/solar_position.h"
@@ -16,12 +17,29 @@ SkyPatches::SkyPatches(int m) : subdivisions_(m) {
     const double alpha = (kPi / 2) / (kRows * m + 0.5);
     patches_.push_back({float(-kPi / 2), 0.f, float(2 * kPi)});
     for (int i = 0; i < kRows * m; ++i) {
+        rowStarts_.push_back(int(patches_.size()));
         const float altitude = float(alpha * (i + 0.5));
         const int inRow = kPatchesInRow[i / m] * m;
         const float solidAngle = float(2 * kPi * (std::sin(alpha * (i + 1)) - std::sin(alpha * i)) / inRow);
         for (int j = 0; j < inRow; ++j) patches_.push_back({altitude, float(2 * kPi * j / inRow), solidAngle});
     }
+    rowStarts_.push_back(int(patches_.size()));
     patches_.push_back({float(kPi / 2), 0.f, float(2 * kPi * (1 - std::cos(alpha * 0.5)))});
+    rowStarts_.push_back(int(patches_.size()));
+}
+
+int SkyPatches::patchAt(const glm::dvec3& d) const {
+    double altitude = std::asin(std::clamp(d.z, -1.0, 1.0)) / kDegree;
+    if (altitude <= 0) return 0;
+    int rows = kRows * subdivisions_;
+    int row = std::min(int(altitude / (90 / (rows + 0.5))), rows);
+    int count = rowStarts_[row + 1] - rowStarts_[row];
+    double azimuth = std::atan2(d.x, d.y) / kDegree;
+    if (azimuth < 0) azimuth += 360;
+    // Patches centred on their azimuths, the first on north: the last half step wraps to it.
+    double step = 360.0 / count;
+    int column = azimuth < 359.9999 - step / 2 ? int((azimuth + step / 2) / step) : 0;
+    return rowStarts_[row] + column;
 }
 
 glm::dvec3 SkyPatches::direction(int i) const {

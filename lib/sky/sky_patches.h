@@ -23,9 +23,12 @@ public:
     const SkyPatch& operator[](int i) const { return patches_[i]; }
     // The unit vector toward a patch's centre (x east, y north, z up).
     glm::dvec3 direction(int i) const;
+    // The patch a unit direction falls in (0: below the horizon), as reinhart.cal's rbin bins it.
+    int patchAt(const glm::dvec3& direction) const;
 
 private:
     int subdivisions_;
+    std::vector<int> rowStarts_;  // the first patch of each row, and one past the last
     std::vector<SkyPatch> patches_;
 };
 

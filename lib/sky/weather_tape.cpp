@@ -42,12 +42,26 @@ double required(const std::string& text, const SourceLocation& where, const char
     return *v;
 }
 
+// A whole number (a date's or time's field), refused beyond what any date holds.
+int integer(const std::string& text, const SourceLocation& where, const char* what) {
+    double v = required(text, where, what);
+    if (!(std::abs(v) <= 1e6) || v != std::floor(v)) throw Error(where, std::string("bad ") + what + " '" + shownBytes(text, 40) + "'");
+    return int(v);
+}
+
 // An EPW value, or none where the file gives its missing-value code (`missing` or more).
 std::optional<double> epwValue(const std::vector<std::string>& f, size_t field, double missing,
                                const SourceLocation& where, const char* what) {
     if (field > f.size() || f[field - 1].empty()) return std::nullopt;
     double v = required(f[field - 1], where, what);
     if (v >= missing) return std::nullopt;
+    return v;
+}
+
+// Irradiances (or illuminances) beyond any sky's, and dew points beyond any air's, are mistakes, refused
+// before they overflow the sky's arithmetic.
+std::optional<double> plausible(std::optional<double> v, double limit, const SourceLocation& where, const char* what) {
+    if (v && !(std::abs(*v) <= limit)) throw Error(where, std::string("implausible ") + what + " " + std::to_string(*v));
     return v;
 }
 
@@ -149,18 +163,18 @@ WeatherRecord WeatherTape::parseEpwRecord(const std::string& line) const {
     WeatherRecord r;
     r.where = here();
     if (f.size() < 16) throw Error(r.where, "EPW record with " + std::to_string(f.size()) + " fields, not 35");
-    r.year = int(required(f[0], r.where, "year"));
-    r.month = int(required(f[1], r.where, "month"));
-    r.day = int(required(f[2], r.where, "day"));
-    int hour = int(required(f[3], r.where, "hour"));
-    r.minute = int(required(f[4], r.where, "minute"));
+    r.year = integer(f[0], r.where, "year");
+    r.month = integer(f[1], r.where, "month");
+    r.day = integer(f[2], r.where, "day");
+    int hour = integer(f[3], r.where, "hour");
+    r.minute = integer(f[4], r.where, "minute");
     // Hourly records stand for the hour that ends at `hour`; shorter ones for the instant they end at, as
     // Radiance's reader takes them.
     r.hour = hour - 1 + (site_.recordsPerHour == 1 ? 0.5 : r.minute / 60.0);
     checkDate(r.month, r.day, r.hour, r.where);
-    r.dewPoint = epwValue(f, 8, 99.9, r.where, "dew point");
-    r.direct = epwValue(f, 15, 9999, r.where, "direct normal irradiance");
-    r.diffuse = epwValue(f, 16, 9999, r.where, "diffuse horizontal irradiance");
+    r.dewPoint = plausible(epwValue(f, 8, 99.9, r.where, "dew point"), 100, r.where, "dew point");
+    r.direct = plausible(epwValue(f, 15, 9999, r.where, "direct normal irradiance"), 1e7, r.where, "direct normal irradiance");
+    r.diffuse = plausible(epwValue(f, 16, 9999, r.where, "diffuse horizontal irradiance"), 1e7, r.where, "diffuse horizontal irradiance");
     // As written, missing-value codes included: epw2wea -a copies them.
     r.skyCover = epwValue(f, 23, INFINITY, r.where, "total sky cover");
     r.aerosolDepth = epwValue(f, 30, INFINITY, r.where, "aerosol optical depth");
@@ -174,12 +188,13 @@ WeatherRecord WeatherTape::parseWeaRecord(const std::string& line) const {
     std::string month, day, hour, direct, diffuse, aerosol, cover;
     if (!(in >> month >> day >> hour >> direct >> diffuse))
         throw Error(r.where, "a .wea record is 'month day hour direct diffuse', not '" + shownBytes(line, 60) + "'");
-    r.month = int(required(month, r.where, "month"));
-    r.day = int(required(day, r.where, "day"));
+    r.month = integer(month, r.where, "month");
+    r.day = integer(day, r.where, "day");
     r.hour = required(hour, r.where, "hour");
     checkDate(r.month, r.day, r.hour, r.where);
     double a = required(direct, r.where, "direct value"), b = required(diffuse, r.where, "diffuse value");
-    r.direct = a, r.diffuse = b;
+    r.direct = plausible(a, 1e7, r.where, "direct value");
+    r.diffuse = plausible(b, 1e7, r.where, "diffuse value");
     if (in >> aerosol >> cover) r.aerosolDepth = required(aerosol, r.where, "aerosol depth"), r.skyCover = required(cover, r.where, "sky cover");
     return r;
 }
