@@ -65,6 +65,21 @@ std::string dataFingerprint(const std::string& bytes) {
     return out;
 }
 
+struct Refusal {
+    const char* command;
+    const char* message;  // what the standard error starts with
+};
+
+// Each command fails with status 1, its message on the standard error and nothing on the standard output.
+void expectRefused(const fs::path& dir, std::initializer_list<Refusal> cases) {
+    for (const Refusal& c : cases) {
+        Output r = runIn(dir, c.command);
+        EXPECT_EQ(r.status, 1) << c.command;
+        EXPECT_TRUE(r.out.empty()) << c.command << "\n" << r.out.substr(0, 200);
+        EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.command << "\n" << r.err;
+    }
+}
+
 }  // namespace
 
 // Every command line of commands.txt: gendaymtx's options (-d, -s, -O1, -r, -5, -A, -u, -i, -g/-c, -h, -D -n)
@@ -148,36 +163,27 @@ TEST(DaymtxCli, BadInputIsNamedAndWritesNothing) {
     std::ofstream(scratch / "f.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=2\nNCOMP=1\nFORMAT=float\n\n" << std::string(12, '\0');
     std::ofstream(scratch / "d.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=1\nNCOMP=3\nFORMAT=ascii\n\n1 2 3\n";
     std::ofstream(scratch / "x.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=2\nNCOMP=1\nFORMAT=ascii\n\n1 1e999\n";
-    struct Case {
-        const char* command;
-        const char* message;
-    };
-    for (Case c : {Case{"gendaymtx short.wea", "gendaymtx: short.wea:3: .wea header ends before its time_zone line"},
-                   Case{"gendaymtx units.wea", "gendaymtx: units.wea:6: weather_data_file_units must be 1, 2 or 3"},
-                   Case{"gendaymtx record.wea", "gendaymtx: record.wea:8: bad direct value 'eight'"},
-                   Case{"gendaymtx date.wea", "gendaymtx: date.wea:7: impossible date or time"},
-                   Case{"gendaymtx latitude.wea", "gendaymtx: latitude.wea:5: latitude outside -90..90"},
-                   Case{"gendaymtx < /dev/null", "gendaymtx: <stdin>: empty weather tape"},
-                   Case{"gendaymtx -m 0 x.wea", "gendaymtx: -m must be 1 to 32"},
-                   Case{"gendaymtx -oq x.wea", "gendaymtx: bad output format -oq"},
-                   Case{"gendaymtx nothere.wea", "gendaymtx: cannot open weather tape 'nothere.wea'"},
-                   Case{"epw2wea record.wea", "epw2wea: record.wea: this does not seem to be an EPW file"},
-                   Case{"epw2wea", "epw2wea: wrong number of arguments"},
-                   Case{"rmtxop a.mtx", "rmtxop: a.mtx: 3 values for a 2x2x1 matrix"},
-                   Case{"rmtxop c.mtx b.mtx", "rmtxop: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
-                   Case{"rmtxop c.mtx + b.mtx", "rmtxop: element by element, a 2x2x1 matrix and a 3x1x1 one do not match"},
-                   Case{"rmtxop f.mtx", "rmtxop: f.mtx: truncated: 3 values for a 2x2x1 matrix"},
-                   Case{"rmtxop x.mtx", "rmtxop: x.mtx: value out of range at element 1"},
-                   Case{"rmtxop c.mtx +", "rmtxop: an operator with no matrix after it"},
-                   Case{"rmtxop -c 1 2 d.mtx", "rmtxop: 2 component weights for a matrix of 3 components"},
-                   Case{"rmtxop -c XYZ c.mtx", "rmtxop: symbolic components (-c XYZ) need an RGB matrix"},
-                   Case{"dctimestep c.mtx b.mtx", "dctimestep: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
-                   Case{"dctimestep 'c%03d.hdr' b.mtx", "dctimestep: component pictures"}}) {
-        Output r = runIn(scratch, c.command);
-        EXPECT_EQ(r.status, 1) << c.command;
-        EXPECT_TRUE(r.out.empty()) << c.command << "\n" << r.out.substr(0, 200);
-        EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.command << "\n" << r.err;
-    }
+    expectRefused(scratch, {{"gendaymtx short.wea", "gendaymtx: short.wea:3: .wea header ends before its time_zone line"},
+                   {"gendaymtx units.wea", "gendaymtx: units.wea:6: weather_data_file_units must be 1, 2 or 3"},
+                   {"gendaymtx record.wea", "gendaymtx: record.wea:8: bad direct value 'eight'"},
+                   {"gendaymtx date.wea", "gendaymtx: date.wea:7: impossible date or time"},
+                   {"gendaymtx latitude.wea", "gendaymtx: latitude.wea:5: latitude outside -90..90"},
+                   {"gendaymtx < /dev/null", "gendaymtx: <stdin>: empty weather tape"},
+                   {"gendaymtx -m 0 x.wea", "gendaymtx: -m must be 1 to 32"},
+                   {"gendaymtx -oq x.wea", "gendaymtx: bad output format -oq"},
+                   {"gendaymtx nothere.wea", "gendaymtx: cannot open weather tape 'nothere.wea'"},
+                   {"epw2wea record.wea", "epw2wea: record.wea: this does not seem to be an EPW file"},
+                   {"epw2wea", "epw2wea: wrong number of arguments"},
+                   {"rmtxop a.mtx", "rmtxop: a.mtx: 3 values for a 2x2x1 matrix"},
+                   {"rmtxop c.mtx b.mtx", "rmtxop: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
+                   {"rmtxop c.mtx + b.mtx", "rmtxop: element by element, a 2x2x1 matrix and a 3x1x1 one do not match"},
+                   {"rmtxop f.mtx", "rmtxop: f.mtx: truncated: 3 values for a 2x2x1 matrix"},
+                   {"rmtxop x.mtx", "rmtxop: x.mtx: value out of range at element 1"},
+                   {"rmtxop c.mtx +", "rmtxop: an operator with no matrix after it"},
+                   {"rmtxop -c 1 2 d.mtx", "rmtxop: 2 component weights for a matrix of 3 components"},
+                   {"rmtxop -c XYZ c.mtx", "rmtxop: symbolic components (-c XYZ) need an RGB matrix"},
+                   {"dctimestep c.mtx b.mtx", "dctimestep: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
+                   {"dctimestep 'c%03d.hdr' b.mtx", "dctimestep: component pictures"}});
 }
 
 // A record without the irradiances the sky needs (EPW's 9999) is an error naming it, not a dark hour.
@@ -203,4 +209,50 @@ TEST(DaymtxCli, MissingIrradianceIsAnError) {
     EXPECT_EQ(r.status, 1);
     EXPECT_TRUE(r.out.empty());
     EXPECT_EQ(r.err.rfind("gendaymtx: gap.epw:20: missing required irradiances", 0), 0u) << r.err;
+}
+
+// daymetrics on the hand-made sensor of AnnualMetrics' test (Honeybee's numbers) and a brighter one, with the
+// hours of its columns, a schedule and the direct sun; and its errors.
+TEST(DaymtxCli, DaymetricsWritesPerSensorAndGridMetrics) {
+    fs::path scratch = brume_test::scratchDir("daymetrics");
+    std::ofstream(scratch / "ill.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=9\nNCOMP=1\nFORMAT=ascii\n\n"
+                                          "0 150 299.99 300 600 3000 3000.5 50 5000\n"
+                                          "400 400 400 400 400 400 400 400 400\n";
+    std::ofstream(scratch / "sun.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=9\nNCOMP=1\nFORMAT=ascii\n\n"
+                                          "0 0 0 0 0 0 1001 1001 1001\n0 0 0 0 0 0 0 0 0\n";
+    std::ofstream hours(scratch / "hours.txt");
+    for (int h = 8; h <= 16; ++h) hours << h + 0.5 << "\n";
+    hours.close();
+    std::ofstream schedule(scratch / "schedule.txt");
+    for (int h = 0; h < 8760; ++h) schedule << ((h >= 8 && h <= 15) || h == 20 || h == 21 ? 1 : 0) << "\n";
+    schedule.close();
+    Output r = runIn(scratch, "daymetrics -hours hours.txt -schedule schedule.txt -direct sun.mtx -ah 2 -g grid.csv ill.mtx");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "sensor,da,cda,udi_lower,udi,udi_upper,sun_hours\n"
+                     "0,40.00,56.67,40.00,50.00,10.00,2\n"
+                     "1,80.00,80.00,20.00,80.00,0.00,0\n");
+    EXPECT_EQ(slurp(scratch / "grid.csv"), "metric,value\nsensors,2\noccupied_hours,10\nsda,50.00\nase,50.00\n");
+    expectRefused(scratch, {{"daymetrics ill.mtx", "daymetrics: ill.mtx: 9 columns, not 8760: say which hours they are (-hours)"},
+                   {"daymetrics -hours schedule.txt ill.mtx", "daymetrics: ill.mtx: 9 columns for 8760 hours"},
+                   {"daymetrics -hours hours.txt -schedule hours.txt ill.mtx", "daymetrics: hours.txt: 9 values, not 8760"},
+                   {"daymetrics -hours hours.txt -direct grid.csv ill.mtx", "daymetrics: grid.csv: not a number"},
+                   {"daymetrics", "daymetrics: one illuminance matrix"}});
+}
+
+// EN 17037's daylight hours from a real year: sensors at a steady 400 lx meet the target at 300 lx (level 1)
+// and the minimum at 100 and 300 lx (level 2); the daylight hours are Chicago's 4380 brightest.
+TEST(DaymtxCli, DaymetricsEn17037FromAWeatherFile) {
+    if (!fs::exists(kWeather / "chicago.epw")) GTEST_SKIP() << "no shared weather data";
+    fs::path scratch = brume_test::scratchDir("daymetrics_en");
+    std::ofstream m(scratch / "ill.mtx");
+    m << "#?RADIANCE\nNROWS=2\nNCOLS=8760\nNCOMP=1\nFORMAT=ascii\n\n";
+    for (int s = 0; s < 2; ++s)
+        for (int h = 0; h < 8760; ++h) m << "400" << (h + 1 < 8760 ? " " : "\n");
+    m.close();
+    Output r = runIn(scratch, "daymetrics -weather '" + (kWeather / "chicago.epw").string() + "' -g grid.csv ill.mtx");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string grid = slurp(scratch / "grid.csv");
+    for (const char* line : {"en17037_target_300,100.00", "en17037_target_500,0.00", "en17037_minimum_300,100.00",
+                             "en17037_target_level,1", "en17037_minimum_level,2", "en17037_level,1"})
+        EXPECT_NE(grid.find(line), std::string::npos) << line << "\n" << grid;
 }

@@ -175,6 +175,8 @@ WeatherRecord WeatherTape::parseEpwRecord(const std::string& line) const {
     r.dewPoint = plausible(epwValue(f, 8, 99.9, r.where, "dew point"), 100, r.where, "dew point");
     r.direct = plausible(epwValue(f, 15, 9999, r.where, "direct normal irradiance"), 1e7, r.where, "direct normal irradiance");
     r.diffuse = plausible(epwValue(f, 16, 9999, r.where, "diffuse horizontal irradiance"), 1e7, r.where, "diffuse horizontal irradiance");
+    r.diffuseIlluminance = plausible(epwValue(f, 19, 999900, r.where, "diffuse horizontal illuminance"), 1e7, r.where,
+                                     "diffuse horizontal illuminance");
     // As written, missing-value codes included: epw2wea -a copies them.
     r.skyCover = epwValue(f, 23, INFINITY, r.where, "total sky cover");
     r.aerosolDepth = epwValue(f, 30, INFINITY, r.where, "aerosol optical depth");

@@ -41,6 +41,7 @@ struct WeatherRecord {
     std::optional<double> dewPoint;  // °C
     std::optional<double> direct;    // as WeatherUnits says; EPW files: direct normal irradiance
     std::optional<double> diffuse;   // diffuse horizontal
+    std::optional<double> diffuseIlluminance;  // EPW files: diffuse horizontal illuminance (lx)
     std::optional<double> aerosolDepth;  // EPW field 29 (thousandths), epw2wea -a
     std::optional<double> skyCover;      // EPW field 23, tenths
 };

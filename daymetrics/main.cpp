@@ -1,0 +1,150 @@
+// daymetrics: annual daylight metrics from hourly illuminances (an annual matrix: sensors × hours), as
+// building codes define them (see man/daymetrics.1).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "daylight/annual_metrics.h"
+#include "matrix/matrix_file.h"
+#include "sky/weather_tape.h"
+#include "util/error.h"
+#include "util/options.h"
+
+using namespace brume;
+
+namespace {
+
+const std::string kUsage = "usage: daymetrics [options] illuminance.mtx\n";
+
+struct Options {
+    DaylightThresholds thresholds;
+    std::string hours, schedule, direct, weather, grid;
+    double sunLux = 1000;
+    int sunHours = 250;
+};
+
+OptionTable makeTable(Options& o) {
+    OptionTable t;
+    t.add("-t", 1, "DA's threshold, lx (default 300)", [&o](const auto& a) { o.thresholds.target = toReal("-t", a[0]); });
+    t.add("-lt", 1, "UDI's lower threshold, lx (default 100)", [&o](const auto& a) { o.thresholds.lower = toReal("-lt", a[0]); });
+    t.add("-ut", 1, "UDI's upper threshold, lx (default 3000)", [&o](const auto& a) { o.thresholds.upper = toReal("-ut", a[0]); });
+    t.add("-hours", 1, "the columns' hours of the year, one a line (Honeybee's sun-up-hours.txt)", [&o](const auto& a) { o.hours = a[0]; });
+    t.add("-schedule", 1, "8760 occupancy values, one a line, > 0 occupied (default: 8 am to 6 pm)", [&o](const auto& a) { o.schedule = a[0]; });
+    t.add("-direct", 1, "illuminance from the direct sun alone (sensors × the same hours), for ASE", [&o](const auto& a) { o.direct = a[0]; });
+    t.add("-al", 1, "ASE's illuminance, lx (default 1000)", [&o](const auto& a) { o.sunLux = toReal("-al", a[0]); });
+    t.add("-ah", 1, "ASE's hours (default 250)", [&o](const auto& a) { o.sunHours = toInt("-ah", a[0]); });
+    t.add("-weather", 1, "a weather tape (.wea or .epw) whose brightest half of the year is EN 17037's daylight hours",
+          [&o](const auto& a) { o.weather = a[0]; });
+    t.add("-g", 1, "write the grid's metrics (sDA, ASE, EN 17037) to this CSV file", [&o](const auto& a) { o.grid = a[0]; });
+    return t;
+}
+
+// One value per line (blank lines and # comments skipped), each named by file:line when it is no number.
+std::vector<double> readColumn(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot open '" + path + "'");
+    std::vector<double> values;
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        std::istringstream words(line);
+        std::string w;
+        if (!(words >> w) || w[0] == '#') continue;
+        char* end;
+        double v = std::strtod(w.c_str(), &end);
+        if (*end || !std::isfinite(v)) throw Error(SourceLocation{path, n}, "not a number: '" + shownBytes(w, 30) + "'");
+        values.push_back(v);
+    }
+    return values;
+}
+
+HourlyIlluminance illuminance(const std::string& spec, const std::vector<int>& hours) {
+    Matrix m = readMatrix(spec);
+    if (m.comps == 3) m = transformed(m, {47.4, 119.9, 11.6});  // RGB irradiance to lux: 179 lm/W × Radiance's Y
+    if (m.comps != 1) throw Error(spec + ": illuminance in 1 component (lx) or 3 (RGB), not " + std::to_string(m.comps));
+    HourlyIlluminance e;
+    e.sensors = m.rows;
+    if (!hours.empty()) e.hours = hours;
+    else if (m.cols == kHoursInYear)
+        for (int h = 0; h < kHoursInYear; ++h) e.hours.push_back(h);
+    else throw Error(spec + ": " + std::to_string(m.cols) + " columns, not 8760: say which hours they are (-hours)");
+    if (int(e.hours.size()) != m.cols)
+        throw Error(spec + ": " + std::to_string(m.cols) + " columns for " + std::to_string(e.hours.size()) + " hours");
+    e.lux = std::move(m.values);
+    return e;
+}
+
+std::vector<int> columnHours(const std::string& path) {
+    std::vector<int> hours;
+    for (double h : readColumn(path)) {
+        if (!(h >= 0 && h < kHoursInYear)) throw Error(path + ": hour " + std::to_string(h) + " outside the year");
+        hours.push_back(int(h));  // 8.5, the middle of 8:00-9:00, is hour 8
+    }
+    return hours;
+}
+
+std::vector<double> diffuseOfYear(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot open weather tape '" + path + "'");
+    WeatherTape tape(in, path);
+    std::vector<double> diffuse;
+    while (std::optional<WeatherRecord> r = tape.next())
+        diffuse.push_back(r->diffuseIlluminance.value_or(r->diffuse.value_or(0)));
+    return diffuse;
+}
+
+int run(int argc, char** argv) {
+    Options o;
+    OptionTable table = makeTable(o);
+    std::vector<std::string> operands = operandsAfterOptions(table, argc, argv, kUsage);
+    if (operands.size() != 1) throw UsageError("one illuminance matrix", kUsage + table.usage());
+    std::vector<int> hours = o.hours.empty() ? std::vector<int>{} : columnHours(o.hours);
+    std::vector<bool> occupied = eightToSix();
+    if (!o.schedule.empty()) {
+        std::vector<double> values = readColumn(o.schedule);
+        if (values.size() != kHoursInYear) throw Error(o.schedule + ": " + std::to_string(values.size()) + " values, not 8760");
+        for (int h = 0; h < kHoursInYear; ++h) occupied[h] = values[h] > 0;
+    }
+    HourlyIlluminance e = illuminance(operands[0], hours);
+    std::vector<SensorMetrics> metrics = annualMetrics(e, occupied, o.thresholds);
+    std::vector<int> sun;
+    if (!o.direct.empty()) {
+        HourlyIlluminance d = illuminance(o.direct, hours);
+        if (d.sensors != e.sensors) throw Error(o.direct + ": " + std::to_string(d.sensors) + " sensors, not " + std::to_string(e.sensors));
+        sun = hoursAbove(d, occupied, o.sunLux);
+    }
+    std::optional<En17037> en;
+    if (!o.weather.empty()) en = en17037(e, daylightHours(diffuseOfYear(o.weather)));
+    std::printf("sensor,da,cda,udi_lower,udi,udi_upper%s\n", sun.empty() ? "" : ",sun_hours");
+    for (int s = 0; s < e.sensors; ++s) {
+        const SensorMetrics& m = metrics[s];
+        std::printf("%d,%.2f,%.2f,%.2f,%.2f,%.2f", s, m.da, m.cda, m.udiLower, m.udi, m.udiUpper);
+        if (!sun.empty()) std::printf(",%d", sun[s]);
+        std::printf("\n");
+    }
+    if (!o.grid.empty()) {
+        std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{std::fopen(o.grid.c_str(), "w"), std::fclose};
+        if (!f) throw Error("cannot open '" + o.grid + "' for output");
+        std::fprintf(f.get(), "metric,value\nsensors,%d\noccupied_hours,%d\nsda,%.2f\n", e.sensors,
+                     int(std::count(occupied.begin(), occupied.end(), true)), spatialDaylightAutonomy(metrics));
+        if (!sun.empty()) std::fprintf(f.get(), "ase,%.2f\n", annualSunlightExposure(sun, o.sunHours));
+        if (en) {
+            for (int l = 0; l < 3; ++l)
+                std::fprintf(f.get(), "en17037_target_%g,%.2f\nen17037_minimum_%g,%.2f\n", kEnTarget[l], en->targetShare[l],
+                             kEnMinimum[l], en->minimumShare[l]);
+            std::fprintf(f.get(), "en17037_target_level,%d\nen17037_minimum_level,%d\nen17037_level,%d\n", en->targetLevel,
+                         en->minimumLevel, en->level);
+        }
+        if (std::fflush(f.get()) != 0) throw Error(o.grid + ": write error");
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    setProgramName(argv[0]);
+    return runReportingErrors([&] { return run(argc, argv); });
+}
