@@ -57,9 +57,20 @@ double Integrator::primaryTmin(const dvec3& org) const {
 }
 
 PathContext Integrator::contextFor(const RayQuery& q, WorkItem& item, RayOutputs& outputs) const {
+    // Records and media do not carry throughput: they would leave contributions out.
+    if (item.contributions && (item.visit || media_.present()))
+        throw Error("contributions are not told through the irradiance cache or participating media");
     return PathContext{Random(seedFor(q.index), q.index), item.scratch, q.time, media_.smokeAt(q.time), item.visit,
-                       &outputs};
+                       &outputs, item.contributions};
 }
+
+namespace {
+// The state a query's first ray starts with: where contributions are collected, a throughput of 1.
+PathState rootOf(PathState start, const PathContext& ctx, const Spectrum& one) {
+    if (ctx.contributions) start.throughput = &one;
+    return start;
+}
+}  // namespace
 
 RayRecord Integrator::trace(const RayQuery& q, WorkItem& item, RayTree* tree) const {
     RayOutputs outputs(tree);
@@ -69,7 +80,8 @@ RayRecord Integrator::trace(const RayQuery& q, WorkItem& item, RayTree* tree) co
     Ray ray{q.org, glm::normalize(q.dir)};
     if (q.maxDistance > 0) ray.tmax = q.maxDistance;
     ray.tmin = primaryTmin(q.org);
-    rec.value = radiance(ray, shading_.startingAt(q.org, item.scratch), ctx, nullptr, &rec);
+    const Spectrum one(1.f);
+    rec.value = radiance(ray, rootOf(shading_.startingAt(q.org, item.scratch), ctx, one), ctx, nullptr, &rec);
     return rec;
 }
 
@@ -116,7 +128,8 @@ RayRecord Integrator::irradianceAtHit(const RayQuery& q, WorkItem& item, RayTree
                                                    ? e->alternate < 0 || isTransparent(e->alternate)
                                                    : isTransparent(mat)));
         if (!hit || (e && !transparent)) {
-            rec.value = radiance(ray, shading_.startingAt(q.org, item.scratch), ctx, nullptr);
+            const Spectrum one(1.f);
+            rec.value = radiance(ray, rootOf(shading_.startingAt(q.org, item.scratch), ctx, one), ctx, nullptr);
             return rec;
         }
         if (!transparent) {
@@ -140,7 +153,9 @@ Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const 
     Spectrum value;
     {
         RayOutputs::Scope none(outputs, nullptr);
-        value = surfaces_.shade(sh, lobes, surface, shading_.startingAt(point, ctx.scratch), ctx, nullptr);
+        const Spectrum one(1.f);
+        value = surfaces_.shade(sh, lobes, surface, rootOf(shading_.startingAt(point, ctx.scratch), ctx, one), ctx,
+                                nullptr);
     }
     outputs.endSensor(sh.point, dir, rec, value);
     return value;
@@ -196,7 +211,10 @@ Spectrum Integrator::blendedHit(const Ray& ray, const SurfaceHit& hit, const Sha
         applyTexturing(textured, branches.shader[k].texturing, ray, hit);
         std::optional<RayOutputs::Scope> scope;
         if (ctx.outputs) scope.emplace(*ctx.outputs, k == main ? record : nullptr);
-        sum += shadeHit(ray, hit, textured, branches.shader[k].material, state, ctx, sourceShare) *
+        PathState branch = state;
+        Spectrum throughput;
+        carryThroughput(state, branch, float(branches.share[k]), throughput);
+        sum += shadeHit(ray, hit, textured, branches.shader[k].material, branch, ctx, sourceShare) *
                float(branches.share[k]);
     }
     return sum;
@@ -219,7 +237,10 @@ Spectrum Integrator::scatterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     Shading at = shading_.forMaterial(ray, hit, sh, functionHit, ctx.scratch.patterns);
     Lobes lobes;
     if (!m.scatter(at, lobes)) return passThrough(ray, hit, state, ctx, sourceShare);
-    return surfaces_.shade(at, lobes, hit.surface, state, ctx, sourceShare) * lobes.incomingAttenuation;
+    PathState attenuated = state;
+    Spectrum throughput;
+    carryThroughput(state, attenuated, lobes.incomingAttenuation, throughput);
+    return surfaces_.shade(at, lobes, hit.surface, attenuated, ctx, sourceShare) * lobes.incomingAttenuation;
 }
 
 Spectrum Integrator::passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, PathContext& ctx,
@@ -255,15 +276,17 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, PathContext
             if (e.kind == Emitter::Kind::Illum) {
                 if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
                 if (state.kind == PathState::Kind::Sampled)
-                    return sampledSourceShare(emitted(), li, state, ray, nullptr, sourceShare);
+                    return sampledSourceShare(emitted(), li, state, ray, nullptr, ctx, sourceShare);
                 continue;
             }
-            if (RayOutputs* out = ctx.recording()) out->distantSource(light.object(), scene_.lightModifier(light), ray.dir);
+            int modifier = scene_.lightModifier(light);
+            if (RayOutputs* out = ctx.recording()) out->distantSource(light.object(), modifier, ray.dir);
             Spectrum le = emitted();
-            if (glows) return le * float(portals_.rayShare(state, ray.dir, ctx.scratch));
+            if (glows) return metSource(le, float(portals_.rayShare(state, ray.dir, ctx.scratch)), modifier, ray, nullptr, state, ctx);
             if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
-            if (state.kind != PathState::Kind::Sampled) return settings_.directVisible ? le : Spectrum(0.f);
-            return sampledSourceShare(le, li, state, ray, nullptr, sourceShare);
+            if (state.kind != PathState::Kind::Sampled)
+                return settings_.directVisible ? metSource(le, 1.f, modifier, ray, nullptr, state, ctx) : Spectrum(0.f);
+            return sampledSourceShare(le, li, state, ray, nullptr, ctx, sourceShare);
         }
     }
     return Spectrum(0.f);
@@ -278,7 +301,7 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
         // mirror's image if a mirror sent it here).
         if (!sh.backside && li >= 0 && state.viaMirror >= 0) return Spectrum(0.f);
         if (sampled && !sh.backside && li >= 0)
-            return sampledSourceShare(e.emitted(-ray.dir) * sh.pattern, li, state, ray, &hit, sourceShare);
+            return sampledSourceShare(e.emitted(-ray.dir) * sh.pattern, li, state, ray, &hit, ctx, sourceShare);
         // Otherwise an illum is its alternate material, or nothing at all.
         Shading own = sh;
         const Material* alt = shading_.alternateMaterial(ray, hit, e, own, ctx.rng, ctx.scratch.patterns);
@@ -292,19 +315,32 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     bool distantGlow = e.kind == Emitter::Kind::Glow && e.glowRadius >= 0 && hit.t > e.glowRadius;
     Spectrum le = e.emitted(-ray.dir) * sh.pattern;
     if (state.viaMirror >= 0 && li >= 0 && e.kind != Emitter::Kind::Glow) return Spectrum(0.f);  // via the image
+    int modifier = scene_.surfaceModifier(hit.surface);
     // -dv- hides sources from the rays that would see them, not the direct light sampled rays carry.
-    if (!sampled) return settings_.directVisible || distantGlow ? le : Spectrum(0.f);
-    if (distantGlow) return le;
+    if (!sampled)
+        return settings_.directVisible || distantGlow ? metSource(le, 1.f, modifier, ray, &hit, state, ctx) : Spectrum(0.f);
+    if (distantGlow) return metSource(le, 1.f, modifier, ray, &hit, state, ctx);
     if (e.kind == Emitter::Kind::Glow && e.glowRadius < 0) return Spectrum(0.f);  // never seen by sampled rays
-    if (li < 0) return le;  // not sampled as a source: only paths find it
-    return sampledSourceShare(le, li, state, ray, &hit, sourceShare);
+    if (li < 0) return metSource(le, 1.f, modifier, ray, &hit, state, ctx);  // not sampled as a source: only paths find it
+    return sampledSourceShare(le, li, state, ray, &hit, ctx, sourceShare);
+}
+
+// The light `le` of a source (of `modifier`) a ray meets, `share` of which counts: told to the contributions.
+Spectrum Integrator::metSource(const Spectrum& le, float share, int modifier, const Ray& ray, const SurfaceHit* hit,
+                               const PathState& state, PathContext& ctx) const {
+    if (hit) contribute(ctx, state, modifier, ray.org, ray.dir, hit->t, hit->normal, share, le);
+    else contribute(ctx, state, modifier, ray.org, ray.dir, std::numeric_limits<double>::infinity(), -ray.dir, share, le);
+    return le * share;
 }
 
 // A sampled ray that meets a source next-event estimation samples: its multiple-importance share goes to
 // the caller, which weighs it by the lobe that sampled the ray (diffuse lobes leave it all to next-event).
 Spectrum Integrator::sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
-                                        const SurfaceHit* hit, Spectrum* sourceShare) const {
-    if (sourceShare) *sourceShare += le * float(lights_.misWeight(scene_.lights()[light], state, ray, hit));
+                                        const SurfaceHit* hit, PathContext& ctx, Spectrum* sourceShare) const {
+    if (!sourceShare) return Spectrum(0.f);
+    float share = float(lights_.misWeight(scene_.lights()[light], state, ray, hit));
+    *sourceShare += le * share;
+    metSource(le, share, scene_.lightModifier(scene_.lights()[light]), ray, hit, state, ctx);
     return Spectrum(0.f);
 }
 

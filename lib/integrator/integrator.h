@@ -12,6 +12,7 @@
 
 #include "cache/surface_cache.h"
 #include "integrator/cache_client.h"
+#include "integrator/contributions.h"
 #include "integrator/hit_shading.h"
 #include "integrator/light_sampler.h"
 #include "integrator/media.h"
@@ -35,10 +36,12 @@ struct RayQuery {
 };
 
 // What one work item of a loop over many gives the integrator: its thread's scratch and, with the cache,
-// where its lookups note the records they miss (none: no lookups, paths sample what records would give).
+// where its lookups note the records they miss (none: no lookups, paths sample what records would give);
+// and where its sources' contributions go (contributions.h: without the cache and media only), if asked.
 struct WorkItem {
     Scratch& scratch;
     CacheVisit* visit = nullptr;
+    ContributionSink* contributions = nullptr;
 };
 
 class Integrator final : public Tracer {
@@ -106,11 +109,13 @@ private:
                         const PathState& state, PathContext& ctx, Spectrum* sourceShare) const;
     Spectrum emitterHit(const Ray& ray, const SurfaceHit& hit, const Shading& sh, const Emitter& e,
                         const PathState& state, PathContext& ctx, Spectrum* sourceShare) const;
+    Spectrum metSource(const Spectrum& le, float share, int modifier, const Ray& ray, const SurfaceHit* hit,
+                       const PathState& state, PathContext& ctx) const;
     Spectrum escaped(const Ray& ray, const PathState& state, PathContext& ctx, Spectrum* sourceShare) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, PathContext& ctx,
                          Spectrum* sourceShare) const;
     Spectrum sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
-                                const SurfaceHit* hit, Spectrum* sourceShare) const;
+                                const SurfaceHit* hit, PathContext& ctx, Spectrum* sourceShare) const;
     Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance,
                               PathContext& ctx, RayRecord& rec, const dvec3& dir) const;
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "integrator/contributions.h"
+
 namespace brume {
 
 using namespace integrator_detail;
@@ -83,11 +85,11 @@ Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, 
     if (state.ambientLevel > 0 && !at.sampledByRays())
         if (auto one = oneSourceOf(at, surface, state, ctx, shares)) return *one;
     // Diffuse light of uniform sources: their unoccluded value in closed form (see directFrom), and how
-    // bright it is in all, for -dt.
+    // bright it is in all, for -dt. (Not where contributions are told: they come sample by sample.)
     std::vector<double>& closedForm = ctx.scratch.perSource;
     closedForm.assign(lights.size(), -1.0);
     double total = 0;
-    if (exactDirect(state) && at.lambertian())
+    if (exactDirect(state) && at.lambertian() && !state.throughput)
         for (size_t i = 0; i < lights.size(); ++i) {
             if (!samplesSource(lights[i], surface)) continue;
             closedForm[i] = lights[i].unoccludedIrradiance(at.point(), at.surface()->normal);
@@ -97,8 +99,11 @@ Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, 
     for (size_t i = 0; i < lights.size(); ++i) {
         if (!samplesSource(lights[i], surface)) continue;
         double share = closedForm[i] > 0 && total > 0 ? closedForm[i] * brightness(lights[i].emitter().radiance) / total : 1.0;
-        Spectrum part = directFrom(lights[i], closedForm[i], share, at, surface, state, ctx);
-        if (shares && !part.isBlack()) part *= float(shares->rayShare(lights[i], at, surface, state, ctx));
+        // The share the source keeps here: known first where contributions are told, else only where it shines.
+        auto kept = [&] { return shares ? shares->rayShare(lights[i], at, surface, state, ctx) : 1.0; };
+        double told = state.throughput ? kept() : 1.0;
+        Spectrum part = directFrom(lights[i], closedForm[i], share, told, at, surface, state, ctx);
+        if (shares && !part.isBlack()) part *= float(state.throughput ? told : kept());
         sum += part;
     }
     if (mirrorImagesOn()) sum += directViaMirrors(at, surface, state, ctx);
@@ -138,16 +143,20 @@ std::optional<Spectrum> LightSampler::oneSourceOf(const Scatterer& at, const Sur
         if ((u -= probability(i)) < 0) break;
     }
     double p = probability(chosen);
-    Spectrum value = directFrom(lights[chosen], -1, 1.0, at, surface, state, ctx) * float(1 / p);
-    if (shares && !value.isBlack()) value *= float(shares->rayShare(lights[chosen], at, surface, state, ctx));
+    auto kept = [&] { return shares ? shares->rayShare(lights[chosen], at, surface, state, ctx) : 1.0; };
+    double told = state.throughput ? kept() : 1.0;
+    Spectrum value = directFrom(lights[chosen], -1, 1.0, told / p, at, surface, state, ctx) * float(1 / p);
+    if (shares && !value.isBlack()) value *= float(state.throughput ? told : kept());
     if (mirrorImagesOn()) value += directViaMirrors(at, surface, state, ctx);
     return value;
 }
 
 // One source's light. With `closedForm` ≥ 0, the diffuse part is that unoccluded value less what the
 // shadow rays find blocked (a control variate): exact where nothing is in the way, noisy only in shadows.
-Spectrum LightSampler::directFrom(const Light& light, double closedForm, double share, const Scatterer& at,
-                                  const SurfaceId& surface, const PathState& state, PathContext& ctx) const {
+// Each sample is told to the contributions times `scale`, the factor the caller then applies to the value.
+Spectrum LightSampler::directFrom(const Light& light, double closedForm, double share, double scale,
+                                  const Scatterer& at, const SurfaceId& surface, const PathState& state,
+                                  PathContext& ctx) const {
     const Emitter& e = light.emitter();
     const dvec3& point = at.point();
     Spectrum sum(0.f);
@@ -163,6 +172,8 @@ Spectrum LightSampler::directFrom(const Light& light, double closedForm, double 
     Spectrum scratch;  // the radiance of patterned and focused sources (see sourceRadiance)
     PatternEvaluator& patterns = ctx.scratch.patterns;
     bool record = ctx.outputs && ctx.outputs->wantsShadowRays();
+    bool told = ctx.contributions && state.throughput;
+    int modifier = told ? scene_.lightModifier(light) : -1;
     for (int k = 0; k < count; ++k) {
         double u, v;
         sobol2D(k, scramble, u, v);
@@ -181,6 +192,7 @@ Spectrum LightSampler::directFrom(const Light& light, double closedForm, double 
             const Spectrum& le = sourceRadiance(light, *s, point, scratch, patterns);
             if (record) recordShadowRay(ctx, point, *s, light, le * t);
             sum.addProduct(f * t, le, weight);
+            if (told) contribute(ctx, state, modifier, point, s->dir, s->distance, s->normal, f * t * float(weight * scale), le);
             if (controlled) {
                 blocked += (Spectrum(1.f) - t) * float(cosL * weight);
                 anyThrough = anyThrough || !t.isBlack();
@@ -191,7 +203,11 @@ Spectrum LightSampler::directFrom(const Light& light, double closedForm, double 
         // source's pattern evaluated only where it is seen.
         bool clear = seen == Occlusion::Clear;
         if (record) recordShadowRay(ctx, point, *s, light, sourceRadiance(light, *s, point, scratch, patterns) * float(clear));
-        if (clear && !f.isBlack()) sum.addProduct(f, sourceRadiance(light, *s, point, scratch, patterns), weight);
+        if (clear && !f.isBlack()) {
+            const Spectrum& le = sourceRadiance(light, *s, point, scratch, patterns);
+            sum.addProduct(f, le, weight);
+            if (told) contribute(ctx, state, modifier, point, s->dir, s->distance, s->normal, f * float(weight * scale), le);
+        }
         if (controlled && !clear) blocked += float(cosL * weight);
         anyThrough = anyThrough || (controlled && clear);
     }
@@ -305,9 +321,12 @@ Spectrum LightSampler::directViaMirrors(const Scatterer& at, const SurfaceId& su
                 if (seen == Occlusion::Blocked) continue;
                 if (seen == Occlusion::Unsure) t *= shadowRays_.toSource(onward, light, crossing, ctx);
                 else if (media_.present()) t *= media_.clearTransmittance(onward, s->distance - toMirror, crossing, ctx.smoke);
-                if (!t.isBlack())
-                    sum += f * sourceRadiance(light, *s, image, scratch, ctx.scratch.patterns) * mirror.reflectance * t *
-                           float(1 / (s->pdf * count));
+                if (t.isBlack()) continue;
+                const Spectrum& le = sourceRadiance(light, *s, image, scratch, ctx.scratch.patterns);
+                sum += f * le * mirror.reflectance * t * float(1 / (s->pdf * count));
+                if (ctx.contributions && state.throughput)
+                    contribute(ctx, state, scene_.lightModifier(light), point, d, s->distance, s->normal,
+                               f * mirror.reflectance * t * float(1 / (s->pdf * count)), le);
             }
         }
     }

@@ -47,7 +47,7 @@ public:
     // One source's light scattered toward the viewer by `at`.
     Spectrum fromSource(const Light& light, const Scatterer& at, const SurfaceId& surface, const PathState& state,
                         PathContext& ctx) const {
-        return directFrom(light, -1, 1.0, at, surface, state, ctx);
+        return directFrom(light, -1, 1.0, 1.0, at, surface, state, ctx);
     }
 
     // A ray drawn from a lobe at `from` with density `pdf`, child of `parent`: it remembers how next-event
@@ -75,7 +75,7 @@ private:
     // through: Clear or Blocked where all or none, else Unsure with `t`, per channel.
     Occlusion passage(const Ray& shadow, const Light& light, double distance, const PathState& state,
                       PathContext& ctx, Spectrum& t) const;
-    Spectrum directFrom(const Light& light, double closedForm, double share, const Scatterer& at,
+    Spectrum directFrom(const Light& light, double closedForm, double share, double scale, const Scatterer& at,
                         const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
     Spectrum directViaMirrors(const Scatterer& at, const SurfaceId& surface, const PathState& state,
                               PathContext& ctx) const;

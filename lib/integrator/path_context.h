@@ -1,6 +1,7 @@
 // What the rays of one work item (a ray given on input, a pixel, a sensor, a cache record) share as they are
 // traced: the random stream its seed starts, its thread's scratch, the instant it is traced at and the
-// smoke then, the cache visit that notes the records its lookups miss, and where its outputs go.
+// smoke then, the cache visit that notes the records its lookups miss, and where its outputs and its sources'
+// contributions go.
 #pragma once
 #include "cache/record_passes.h"
 #include "integrator/ray_outputs.h"
@@ -10,6 +11,8 @@
 
 namespace brume {
 
+class ContributionSink;
+
 struct PathContext {
     Random rng;
     Scratch& scratch;
@@ -17,6 +20,7 @@ struct PathContext {
     const ParticipatingMedia& smoke;  // the smoke at that instant
     CacheVisit* visit = nullptr;      // null: no cache lookups (paths sample what records would give)
     RayOutputs* outputs = nullptr;    // null: nobody asks for rtrace's outputs
+    ContributionSink* contributions = nullptr;  // null: nobody asks which source brings what (contributions.h)
 
     // The outputs, where the record of the ray being traced is asked for (else null).
     RayOutputs* recording() const { return outputs && outputs->record() ? outputs : nullptr; }

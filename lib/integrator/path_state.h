@@ -65,6 +65,9 @@ struct PathState {
     double aimedPerRay = 1;
     // Antimatter volumes the ray is inside, which hide the surfaces they cut; mists it is inside.
     InsideVolumes clips, mists;
+    // Where contributions are collected (contributions.h): what a unit of radiance along the ray adds to the
+    // query's value, kept by whoever spawned the ray; else null.
+    const Spectrum* throughput = nullptr;
 };
 
 // Whether a path goes on past a scattering, and by how much its contribution grows if it does: Radiance's

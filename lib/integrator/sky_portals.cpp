@@ -1,5 +1,6 @@
 #include "integrator/sky_portals.h"
 
+#include "integrator/contributions.h"
 #include "sampling/warp.h"
 
 namespace brume {
@@ -59,12 +60,14 @@ double SkyPortals::rayShare(const PathState& ray, const dvec3& dir, Scratch& scr
                      : 1.0;
 }
 
-Spectrum SkyPortals::skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns) const {
+Spectrum SkyPortals::skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns, int& glow) const {
+    glow = -1;
     for (bool glows : {false, true})
         for (int li : scene_.distantLights()) {
             const Light& light = scene_.lights()[li];
             if ((light.emitter().kind == Emitter::Kind::Glow) != glows || !light.distantContains(dir)) continue;
             if (!glows) return Spectrum(0.f);
+            glow = li;
             Spectrum le = light.emitter().emitted(-dir);
             if (light.patterned()) le *= shading_.sourcePattern(light, p, -dir, dir, kDistantSourceDistance, patterns);
             return le;
@@ -112,10 +115,15 @@ Spectrum SkyPortals::sample(const dvec3& p, const dvec3& n, const SurfaceId& sur
         Spectrum t = shadowRays_.toSurface(Ray{p, dir, std::numeric_limits<double>::infinity(), surface}, SurfaceId{},
                                            true, Emitter::Kind::Glow, crossing, ctx, nullptr);
         if (t.isBlack()) continue;
-        Spectrum le = skyToward(p, dir, ctx.scratch.patterns);
+        int glow;
+        Spectrum le = skyToward(p, dir, ctx.scratch.patterns, glow);
         if (le.isBlack()) continue;
-        Spectrum part = le * t * float(powerHeuristic(perRay * pdf, cosine / kPi) * cosine / (kPi * pdf * perRay));
+        float weight = float(powerHeuristic(perRay * pdf, cosine / kPi) * cosine / (kPi * pdf * perRay));
+        Spectrum part = le * t * weight;
         sum += part;
+        if (ctx.contributions)
+            contribute(ctx, state, scene_.lightModifier(scene_.lights()[glow]), p, dir,
+                       std::numeric_limits<double>::infinity(), -dir, t * weight, le);
         if (aimed) aimed->push_back({dir, part * float(kPi / rays), distance});
     }
     return sum;

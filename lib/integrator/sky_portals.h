@@ -37,8 +37,8 @@ public:
     // Added to the radiance of `rays` cosine-distributed rays from p (facing n, leaving `surface`):
     // aimedCount(rays) samples aimed at the portals, each the sky's radiance it meets × the transmission of
     // the glazing it crosses × its multiple-importance weight × cosθ/(π·pdf), scaled to `rays` samples.
-    // `state`: the rays' (the volumes they are in). `aimed`, if given, receives each sample that brings
-    // light, with its share of the irradiance.
+    // `state`: the rays' (the volumes they are in, their throughput). `aimed`, if given, receives each sample
+    // that brings light, with its share of the irradiance.
     Spectrum sample(const dvec3& p, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
                     PathContext& ctx, std::vector<AimedSample>* aimed = nullptr) const;
     // The share of the sky a ray keeps where it escapes along dir: all of it, unless it is a cosine-distributed
@@ -55,9 +55,9 @@ private:
     bool choose(const dvec3& p, const dvec3& n, std::vector<PortalChoice>& choices) const;
     double densityOf(const dvec3& p, const dvec3& dir, const std::vector<PortalChoice>& choices) const;
     static dvec3 aimAt(const std::vector<PortalChoice>& choices, double u, double v, double& distance);
-    // The radiance of the glow at infinity a ray escaping along dir meets; black where a source next-event
-    // estimation samples (the sun) comes first, as Radiance orders them.
-    Spectrum skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns) const;
+    // The radiance of the glow at infinity a ray escaping along dir meets, and which light it is (-1: none);
+    // black where a source next-event estimation samples (the sun) comes first, as Radiance orders them.
+    Spectrum skyToward(const dvec3& p, const dvec3& dir, PatternEvaluator& patterns, int& glow) const;
 
     const RenderScene& scene_;
     const HitShading& shading_;

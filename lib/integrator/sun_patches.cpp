@@ -1,5 +1,6 @@
 #include "integrator/sun_patches.h"
 
+#include "integrator/contributions.h"
 #include "sampling/warp.h"
 
 namespace brume {
@@ -75,8 +76,9 @@ double SunPatches::density(const Beam& beam, int portals, const dvec3& normal) c
     return portals * std::abs(glm::dot(normal, beam.travel)) / beam.crossSection;
 }
 
-std::optional<Spectrum> SunPatches::reflected(const Beam& beam, const SurfaceHit& at, const Ray& connection,
-                                              const PathState& state, PathContext& ctx, dvec3& normal) const {
+std::optional<Spectrum> SunPatches::connected(const Beam& beam, const SurfaceHit& at, const Ray& connection,
+                                              const Spectrum& t, double cosX, double perRay, const PathState& state,
+                                              PathContext& ctx) const {
     Shading sh = shadingAt(connection, at, scene_.geometry().isFlat(at.surface), scene_.objectFrame(at.surface));
     int mat = shading_.shaderAt(connection, at, sh, ctx.rng, ctx.scratch.patterns);
     const Material* material = mat >= 0 && !scene_.emitter(mat) ? scene_.material(mat) : nullptr;
@@ -87,10 +89,20 @@ std::optional<Spectrum> SunPatches::reflected(const Beam& beam, const SurfaceHit
     if (!material->scatter(asSeen, lobes)) return std::nullopt;
     Scatterer patch(asSeen, lobes);
     if (!patch.onlyLambertian()) return std::nullopt;
-    normal = sh.normal;
+    double distance = at.t, cosPatch = std::abs(glm::dot(at.normal, connection.dir));
+    int portals = portalsBefore(beam, at.point, at.surface);
+    double pdf = density(beam, portals, at.normal) * distance * distance / cosPatch;
+    // The weight as the ray's share at the patch computes it (rayShare), from the shading normal.
+    double weighed = density(beam, portals, sh.normal) * distance * distance / std::abs(glm::dot(sh.normal, connection.dir));
+    if (!(pdf > 0) || !(weighed > 0)) return std::nullopt;
+    float weight = float(powerHeuristic(perRay * weighed, cosX / kPi) * cosX / (kPi * pdf * perRay));
     PathState there = state;
     ++there.depth;
-    return lights_.fromSource(scene_.lights()[beam.light], patch, at.surface, there, ctx) * lobes.incomingAttenuation;
+    Spectrum throughput;
+    if (state.throughput) carryThroughput(state, there, lobes.incomingAttenuation * t * weight, throughput);
+    Spectrum le = lights_.fromSource(scene_.lights()[beam.light], patch, at.surface, there, ctx) * lobes.incomingAttenuation;
+    if (le.isBlack()) return std::nullopt;
+    return le * t * weight;
 }
 
 Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& surface, int rays, const PathState& state,
@@ -117,19 +129,10 @@ Spectrum SunPatches::sample(const dvec3& x, const dvec3& n, const SurfaceId& sur
                                                &reached);
             if (t.isBlack() || std::abs(reached.t - distance) > 1e-6 * distance) continue;
             patch->t = distance;
-            dvec3 shadingNormal;
-            std::optional<Spectrum> le = reflected(beam, *patch, connection, crossing, ctx, shadingNormal);
-            if (!le || le->isBlack()) continue;
-            int portals = portalsBefore(beam, patch->point, patch->surface);
-            double pdf = density(beam, portals, patch->normal) * distance * distance / cosPatch;
-            // The weight as the ray's share at the patch computes it (rayShare), from the shading normal.
-            double weighed = density(beam, portals, shadingNormal) * distance * distance /
-                             std::abs(glm::dot(shadingNormal, dir));
-            if (!(pdf > 0) || !(weighed > 0)) continue;
-            Spectrum part =
-                *le * t * float(powerHeuristic(perRay * weighed, cosX / kPi) * cosX / (kPi * pdf * perRay));
-            sum += part;
-            if (aimed) aimed->push_back({dir, part * float(kPi / rays), distance});
+            std::optional<Spectrum> part = connected(beam, *patch, connection, t, cosX, perRay, crossing, ctx);
+            if (!part) continue;
+            sum += *part;
+            if (aimed) aimed->push_back({dir, *part * float(kPi / rays), distance});
         }
     }
     return sum;

@@ -52,10 +52,11 @@ private:
     int portalsBefore(const Beam& beam, const dvec3& point, const SurfaceId& surface) const;
     double density(const Beam& beam, int portals, const dvec3& normal) const;
     bool isPortal(const SurfaceId& id) const;
-    // The sunlight a point reflects back along a connection to it (a ray from x that meets it), if it only
-    // reflects diffusely; its shading normal goes to `normal`.
-    std::optional<Spectrum> reflected(const Beam& beam, const SurfaceHit& at, const Ray& connection,
-                                      const PathState& state, PathContext& ctx, dvec3& normal) const;
+    // What a connection from x (a ray that meets the sunlit point `at`, through glazing of transmission t,
+    // cosX to x's normal) brings: the sunlight the point reflects back along it, if it only reflects diffusely,
+    // × t × the connection's multiple-importance weight × cosθ/(π·pdf), of `perRay` connections per ray.
+    std::optional<Spectrum> connected(const Beam& beam, const SurfaceHit& at, const Ray& connection, const Spectrum& t,
+                                      double cosX, double perRay, const PathState& state, PathContext& ctx) const;
 
     const RenderScene& scene_;
     const HitShading& shading_;

@@ -1,5 +1,6 @@
 #include "integrator/surface_scattering.h"
 
+#include "integrator/contributions.h"
 #include "material/ward.h"
 #include "sampling/warp.h"
 
@@ -26,7 +27,8 @@ Spectrum SurfaceScattering::shade(const Shading& sh, const Lobes& lobes, const S
             scene_.isPlanarMirror(surface))
             child.viaMirror = surface.surface;
         RayRecord childRecord;
-        Spectrum share(0.f);
+        Spectrum share(0.f), throughput;
+        carryThroughput(state, child, d.weight * boost, throughput);
         Spectrum li = tracer_.radiance(Ray{sh.point, glm::normalize(d.dir), std::numeric_limits<double>::infinity(), surface},
                                        child, ctx, stillSampled ? &share : nullptr, recorded ? &childRecord : nullptr);
         if (sourceShare && !share.isBlack()) *sourceShare += d.weight * share * boost;
@@ -64,6 +66,8 @@ Spectrum SurfaceScattering::glossy(const Shading& sh, const Lobes& lobes, const 
         double pdf = transmit ? gaussianTransmissionPdf(sh.dir, wi, alpha2) : wardPdf(wo, wi, sh.normal, alpha2);
         double f = transmit ? gaussianBtdf(sh.dir, wi, alpha2, sh.cosine, -cosI) : wardBrdf(wo, wi, sh.normal, alpha2);
         if (!(pdf > 0)) continue;
+        Spectrum throughput;
+        if (state.throughput) carryThroughput(state, child, coef * float(f * std::abs(cosI) / pdf * boost), throughput);
         sum += coef * tracer_.sampledRadiance(sh.point, surface, wi, pdf, state, child, ctx) *
                float(f * std::abs(cosI) / pdf * boost);
     }
@@ -79,6 +83,8 @@ Spectrum SurfaceScattering::general(const Shading& sh, const GeneralLobe& lobe, 
     PathState child;
     float boost;
     if (!roulette_.spawn(state, child, s->weight, !s->transmits, ctx.rng, boost)) return Spectrum(0.f);
+    Spectrum throughput;
+    carryThroughput(state, child, s->weight * boost, throughput);
     return s->weight * tracer_.sampledRadiance(sh.point, surface, s->dir, s->pdf, state, child, ctx) * boost;
 }
 
@@ -113,6 +119,8 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
         child.kind = PathState::Kind::Sampled;
         child.ambientLevel = state.ambientLevel + 1;
         aimingFrom(child, sh.point, normal, count, portals_.active());
+        Spectrum throughput;
+        carryThroughput(state, child, coef * float(boost / count), throughput);
         Frame frame(normal);
         uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         Spectrum paths(0.f);
