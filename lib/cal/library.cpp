@@ -64,10 +64,16 @@ void Library::loadText(std::string_view text, const std::string& origin, const S
     }
 }
 
-void Library::define(Definition d) {
+void Library::redefine(std::string_view text, const std::string& origin) {
+    for (Definition& d : parseDefinitions(text, origin)) define(std::move(d), true);
+}
+
+void Library::define(Definition d, bool quietly) {
     std::string key = qualified(d.name, d.context);
     auto& slot = definitions_[key];
-    if (slot && !sameDefinition(*slot, d))
+    if (quietly) {
+        // a parameter replaces whatever was there
+    } else if (slot && !sameDefinition(*slot, d))
         warn(d.where.str() + ": " + key + (slot->constant ? ": constant redefined" : ": redefined"));
     else if (!slot && d.isFunction() && findBuiltin(d.name))
         warn(d.where.str() + ": " + key + ": definition hides library function");

@@ -37,6 +37,10 @@ public:
     Scope loadFile(const std::string& name, const SourceLocation& where = {});
     // Definitions from text; `origin` names it in messages.
     void loadText(std::string_view text, const std::string& origin, const Scope& scope = {});
+    // The same, replacing earlier definitions without a warning: a command line's parameters, and files that
+    // knowingly redefine what Brume's rayinit.cal defines (rcontrib's -p and -f; Radiance's reinhartb.cal
+    // defines its own mod, Asin and Atan2).
+    void redefine(std::string_view text, const std::string& origin);
 
     // The definition `name` means in `scope`, or nullptr.
     const Definition* find(std::string_view name, const Scope& scope) const;
@@ -44,7 +48,7 @@ public:
     uint64_t version() const { return replaced_.size() + definitions_.size(); }
 
 private:
-    void define(Definition d);
+    void define(Definition d, bool quietly = false);
 
     std::unordered_map<std::string, std::unique_ptr<const Definition>> definitions_;
     // Kept for Compilers that have already compiled them.

@@ -12,6 +12,7 @@
 #include "spectrum/binned_spectrum.h"
 #include "spectrum/colorimetry.h"
 #include "spectrum/rgb_to_spectrum.h"
+#include "util/options.h"
 
 namespace brume {
 
@@ -76,14 +77,6 @@ Spectrum sootExtinction() {
     return spectrumFromBins(bins, kFirst - 0.5, kLast + 0.5);
 }
 
-namespace {
-std::string seconds(double t) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", t);
-    return text;
-}
-}  // namespace
-
 SmokeDescription readSmoke(const SceneObject& o) {
     if (!o.integers.empty()) badSmoke(o, "expected no integers");
     const std::vector<double>& r = o.reals;
@@ -131,9 +124,9 @@ void checkInstants(const std::vector<SmokeDescription>& smoke, std::span<const d
         if (frames.size() < 2) continue;  // static
         for (double t : times)
             if (!(t >= frames.front().time && t <= frames.back().time))
-                throw Error(s.where, "smoke '" + s.name + "': no data at " + seconds(t) + " s, outside its " +
+                throw Error(s.where, "smoke '" + s.name + "': no data at " + formatShort(t) + " s, outside its " +
                                          std::to_string(frames.size()) + " key frames (" +
-                                         seconds(frames.front().time) + " to " + seconds(frames.back().time) +
+                                         formatShort(frames.front().time) + " to " + formatShort(frames.back().time) +
                                          " s; -T sets the instant)");
     }
 }

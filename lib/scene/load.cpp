@@ -38,7 +38,9 @@ Scene loadScene(const std::vector<std::string>& paths) {
         if (path == "-") {
             readStandardInput(scene, paths.size() == 1);
         } else if (!path.starts_with('!') && isOctreeFile(path)) {
-            if (paths.size() != 1) throw Error(SourceLocation{path}, "an octree must be the only scene argument");
+            // Scene files may follow an octree, as oconv -i adds them to one (rfluxmtx's receivers).
+            if (&path != &paths.front())
+                throw Error(SourceLocation{path}, "an octree must be the first scene argument, and the only octree");
             readOctreeFile(scene, path);
         } else {
             // Files named on the command line are opened as given when they exist, like oconv's;

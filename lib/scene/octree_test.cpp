@@ -160,12 +160,20 @@ TEST(Octree, LoadSceneReadsASingleOctree) {
     EXPECT_TRUE(scene.cube);
 }
 
-TEST(Octree, OctreeMustBeTheOnlySceneArgument) {
-    try {
-        loadScene({kData + "/lib/found.rad", kData + "/scene.oct"});
-        FAIL() << "no error";
-    } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), kData + "/scene.oct: an octree must be the only scene argument");
+TEST(Octree, SceneFilesMayFollowAnOctreeOnlyOne) {
+    Scene scene = loadScene({kData + "/scene_frozen.oct", kData + "/lib/found.rad"});
+    EXPECT_GT(scene.objects.size(), readText().objects.size());
+    EXPECT_TRUE(scene.cube);
+    for (const std::vector<std::string>& paths :
+         {std::vector<std::string>{kData + "/lib/found.rad", kData + "/scene_frozen.oct"},
+          {kData + "/scene_frozen.oct", kData + "/scene_frozen.oct"}}) {
+        try {
+            loadScene(paths);
+            ADD_FAILURE() << "no error";
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()),
+                      kData + "/scene_frozen.oct: an octree must be the first scene argument, and the only octree");
+        }
     }
 }
 

@@ -5,18 +5,13 @@
 #include "spectrum/colorimetry.h"
 #include "spectrum/spectrum.h"
 #include "util/error.h"
+#include "util/options.h"
 
 namespace brume {
 
 namespace {
 
 SpectralSampling gSampling;
-
-std::string nm(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
 
 }  // namespace
 
@@ -45,7 +40,7 @@ void setSpectralSampling(SpectralSampling s) {
         throw Error(option + ": at most " + std::to_string(Spectrum::kMaxChannels) + " spectral samples");
     if (s.longest < s.shortest) std::swap(s.longest, s.shortest);
     if (!(s.longest - s.shortest >= 50) || !(s.shortest >= 200) || !(s.longest <= 2000))
-        throw Error("-cw " + nm(s.shortest) + " " + nm(s.longest) +
+        throw Error("-cw " + formatShort(s.shortest) + " " + formatShort(s.longest) +
                     ": the spectral range must span 50 nm or more within 200 to 2000 nm");
     gSampling = s;
     remakeObserverWeights();
@@ -62,7 +57,7 @@ void setSpectralSampling(SpectralSampling s) {
 }
 
 std::string samplingOptions(const SpectralSampling& s) {
-    return "-cs " + std::to_string(s.channels) + " -cw " + nm(s.shortest) + " " + nm(s.longest);
+    return "-cs " + std::to_string(s.channels) + " -cw " + formatShort(s.shortest) + " " + formatShort(s.longest);
 }
 
 }  // namespace brume

@@ -34,6 +34,12 @@ std::string formatReal(double v) {
     return buf;
 }
 
+std::string formatShort(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
 void OptionTable::addUnsupported(const std::string& name, int count, const std::string& help) {
     add(name, count, help + " (not supported yet)",
         [name](const std::vector<std::string>&) { throw Error("option " + name + " is not supported by Brume yet"); });

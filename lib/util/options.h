@@ -69,7 +69,8 @@ std::vector<std::string> operandsAfterOptions(const OptionTable& table, int argc
 // Options holding one number, printed by -defaults as Radiance prints them ("%f" for reals).
 void addIntOption(OptionTable& table, const std::string& name, int& value, const std::string& help);
 void addRealOption(OptionTable& table, const std::string& name, double& value, const std::string& help);
-std::string formatReal(double value);  // "%f"
+std::string formatReal(double value);   // "%f"
+std::string formatShort(double value);  // "%g"
 
 // Argument conversion with clear errors naming the option: "bad value 'x' for option -ab".
 int toInt(const std::string& option, const std::string& text);

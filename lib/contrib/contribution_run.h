@@ -1,0 +1,48 @@
+// rcontrib's run, shared by rcontrib and rfluxmtx: its command line (rtrace's options that apply, and the
+// modifiers with their bins, definitions and parameters, formats, outputs) and the loop that reads rays,
+// traces each record's rays with a tally of its own (on every thread, records in input order) and writes the
+// records.
+#pragma once
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "contrib/modifier_bins.h"
+#include "integrator/render_options.h"
+#include "util/options.h"
+
+namespace brume {
+
+struct ContributionRun {
+    ProgramOptions program;
+    RenderSettings render;
+    bool irradiance = false, irradianceAtHit = false, header = true, values = false, overwrite = false;
+    int accumulate = 1, xres = 0, yres = 0;
+    char inFormat = 'a', outFormat = 'a';
+    std::string outputs;  // -o pattern, empty: the standard output
+    std::vector<CalDefinition> definitions;
+    std::vector<ModifierRequest> modifiers;
+    ModifierRequest next;  // the -b, -bn and -p the next -m takes
+
+    void addModifier(const std::string& name);
+    // Sets the -o pattern of the modifiers that follow (Brume's rcontrib takes one for all).
+    void setOutputs(const std::string& pattern);
+};
+
+// rcontrib's -f names a function file where the word is -f alone, formats where letters follow it: in
+// the words a table from contributionOptions parses, the first must be this (functionFileWords).
+extern const char* const kFunctionFileOption;
+// `words` with every -f alone made kFunctionFileOption (@files expanded first), and back.
+std::vector<std::string> functionFileWords(std::vector<std::string> words);
+void restoreFunctionFileWords(std::vector<std::string>& words);
+
+// The options of rcontrib's command line, applied to `run` as they are parsed.
+OptionTable contributionOptions(ContributionRun& run);
+
+// Traces the records of rays read from `rays` in `sceneFiles` (octrees and scene files), and writes them
+// where `run` says; `command` names the run in the output's header. Throws Error for what cannot be told
+// (media), bad rays, outputs that cannot be written (removed then).
+void runContributions(ContributionRun run, const std::vector<std::string>& sceneFiles,
+                      const std::vector<std::string>& command, std::istream& rays);
+
+}  // namespace brume

@@ -1,0 +1,97 @@
+#include "contrib/modifier_bins.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+
+#include "cal/compiler.h"
+#include "cal/embedded.h"
+#include "cal/evaluator.h"
+#include "scene/raypath.h"
+#include "util/error.h"
+
+namespace brume {
+
+namespace {
+
+// An -e expression as a definition: Radiance's take a missing final ';'.
+std::string terminated(std::string text) {
+    size_t end = text.find_last_not_of(" \t\n");
+    if (end != std::string::npos && text[end] != ';') text += ';';
+    return text;
+}
+
+// The definitions every modifier's bins see, then its parameters ("a=1,b=2"), over Brume's rayinit.cal.
+void loadDefinitions(cal::Library& library, const std::vector<CalDefinition>& definitions,
+                     const std::string& parameters) {
+    for (const CalDefinition& d : definitions) {
+        if (d.kind == CalDefinition::Kind::Expression) {
+            library.loadText(terminated(d.text), "-e " + d.text);
+        } else {
+            FileText file = readLibraryFile(d.text, cal::embeddedCalFiles(), "function file");
+            library.redefine(file.text, file.origin);
+        }
+    }
+    if (parameters.empty()) return;
+    std::string text = parameters;
+    std::replace(text.begin(), text.end(), ',', ';');
+    library.redefine(terminated(text), "-p " + parameters);
+}
+
+// The value of a bin expression that is a plain number.
+std::optional<double> number(const std::string& text) {
+    char* end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str()) return std::nullopt;
+    while (*end == ' ' || *end == '\t') ++end;
+    return *end ? std::nullopt : std::optional<double>(v);
+}
+
+// The objects named `name` that may modify others: those a contribution's modifier may be.
+std::vector<int> modifiersNamed(const Scene& scene, const std::string& name) {
+    std::vector<int> found;
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].name == name && isModifierType(scene.objects[i].type)) found.push_back(int(i));
+    return found;
+}
+
+}  // namespace
+
+ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const std::vector<CalDefinition>& definitions,
+                           const std::vector<ModifierRequest>& requests)
+    : byObject_(scene.objects.size(), -1) {
+    for (const ModifierRequest& r : requests) {
+        if (r.name == "void") throw Error("cannot track 'void' modifier");
+        std::vector<int> objects = modifiersNamed(scene, r.name);
+        if (objects.empty()) throw Error("modifier '" + r.name + "' is not in the scene");
+        for (int o : objects) {
+            if (!render.emitter(o))
+                throw Error("modifier '" + r.name + "' (" + scene.objects[o].type +
+                            ") is no light source: Brume tells the contributions of light, glow, illum and spotlight only");
+            if (byObject_[o] >= 0) throw Error("duplicate modifier '" + r.name + "'");
+            byObject_[o] = int(modifiers_.size());
+        }
+        cal::Library library;
+        loadDefinitions(library, definitions, r.parameters);
+        cal::Compiler compiler(library);
+        cal::ExprId bin = compiler.expression(r.bin, {}, {"-b", 1});
+        cal::ExprId count = compiler.expression(r.binCount, {}, {"-bn", 1});
+        std::optional<double> constant = number(r.bin);
+        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, constant.has_value()};
+        cal::Evaluator evaluator(t.program);
+        evaluator.begin(cal::Channels{});
+        if (constant) {
+            // A constant bin is one bin, whatever -bn says.
+            if (!(std::abs(*constant) < 0.5)) throw Error("illegal non-zero constant for bin (" + r.bin + ")");
+        } else {
+            double n = evaluator(count);
+            if (!(n >= 0.5) || n > 1e8) throw Error("unspecified or illegal bin count for modifier '" + r.name + "'");
+            t.bins = int(n + 0.5);
+        }
+        columns_ += t.bins;
+        modifiers_.push_back(std::move(t));
+    }
+}
+
+}  // namespace brume

@@ -1,0 +1,32 @@
+// rcontrib: each light source's contribution to the values along rays read from standard input, binned by
+// direction, as Radiance's rcontrib (see man/rcontrib.1). Its run is lib/contrib's.
+#include <iostream>
+
+#include "contrib/contribution_run.h"
+
+using namespace brume;
+
+namespace {
+
+const char* const kUsage =
+    "usage: rcontrib [options] [-e expr][-f file][-p a=v,...][-b binv][-bn N] {-m mod | -M file} ... octree|scene.rad ... < rays\n";
+
+int run(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);
+    ContributionRun o;
+    OptionTable table = contributionOptions(o);
+    std::vector<std::string> words = functionFileWords({argv + 1, argv + argc});
+    std::vector<char*> args{argv[0]};
+    for (std::string& w : words) args.push_back(w.data());
+    auto line = parseCommandLine(int(args.size()), args.data(), table, o.program, kUsage, "Multithreading\nAccumulation\n");
+    if (!line) return 0;
+    restoreFunctionFileWords(line->command);
+    runContributions(o, line->scene, line->command, std::cin);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return runReportingErrors([&] { return run(argc, argv); });
+}
