@@ -27,6 +27,16 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
             const float* aik = a.at(i, k);
             if (std::all_of(aik, aik + comps, [](float x) { return x == 0; })) continue;  // sky patches no sensor sees
             const float* bk = b.at(k, 0);
+            if (comps == 3) {  // RGB, nearly always: unrolled, the compiler's vector code (sums in the same order)
+                const double a0 = aik[0], a1 = aik[1], a2 = aik[2];
+                double* r = row.data();
+                for (int j = 0; j < b.cols; ++j, r += 3, bk += 3) {
+                    r[0] += a0 * bk[0];
+                    r[1] += a1 * bk[1];
+                    r[2] += a2 * bk[2];
+                }
+                continue;
+            }
             for (int j = 0; j < b.cols; ++j)
                 for (int c = 0; c < comps; ++c) row[j * comps + c] += double(aik[c]) * bk[j * comps + c];
         }

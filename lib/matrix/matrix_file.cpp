@@ -1,6 +1,7 @@
 #include "matrix/matrix_file.h"
 
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -27,11 +28,7 @@ std::string readAll(std::FILE* f) {
 }
 
 std::string inputBytes(const std::string& spec) {
-    if (spec == "-") {
-        std::ostringstream all;
-        all << std::cin.rdbuf();
-        return all.str();
-    }
+    if (spec == "-") return readAll(stdin);  // in blocks: std::cin, synchronised with stdio, reads a byte at a time
     if (!spec.empty() && spec[0] == '!') {
         std::FILE* pipe = popen(spec.c_str() + 1, "r");
         if (!pipe) throw Error("cannot run '" + spec.substr(1) + "'");
@@ -39,11 +36,11 @@ std::string inputBytes(const std::string& spec) {
         if (pclose(pipe) != 0) throw Error("command '" + spec.substr(1) + "' failed");
         return bytes;
     }
-    std::ifstream in(spec, std::ios::binary);
-    if (!in) throw Error("cannot open matrix file '" + spec + "'");
-    std::ostringstream all;
-    all << in.rdbuf();
-    return all.str();
+    std::FILE* file = std::fopen(spec.c_str(), "rb");
+    if (!file) throw Error("cannot open matrix file '" + spec + "'");
+    std::string bytes = readAll(file);
+    std::fclose(file);
+    return bytes;
 }
 
 // Values that overflow single precision (huge inputs, an exposure's scale, products) are refused, not written.
@@ -171,16 +168,27 @@ Matrix pictureValues(const std::string& bytes, const std::string& name) {
     return m;
 }
 
+// printf's "%.Ne" digits (both round exactly), without printf's cost: a year of sensors is millions of them.
+void appendScientific(std::string& line, double v, int precision) {
+    char buffer[32];
+    auto end = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::scientific, precision).ptr;
+    line.append(buffer, end);
+}
+
 void writeAscii(std::FILE* out, const Matrix& m, AsciiLayout layout) {
+    std::string line;
     for (int r = 0; r < m.rows; ++r) {
+        line.clear();
         for (int c = 0; c < m.cols; ++c) {
             const float* e = m.at(r, c);
-            for (int k = 0; k < m.comps; ++k)
-                if (layout == AsciiLayout::Rmtxop) std::fprintf(out, " %.7e", e[k]);
-                else std::fprintf(out, k ? " %.6e" : "%.6e", e[k]);
-            if (layout == AsciiLayout::Rmtxop || c + 1 < m.cols) std::fputc('\t', out);
+            for (int k = 0; k < m.comps; ++k) {
+                if (layout == AsciiLayout::Rmtxop || k) line += ' ';
+                appendScientific(line, e[k], layout == AsciiLayout::Rmtxop ? 7 : 6);
+            }
+            if (layout == AsciiLayout::Rmtxop || c + 1 < m.cols) line += '\t';
         }
-        std::fputc('\n', out);
+        line += '\n';
+        std::fwrite(line.data(), 1, line.size(), out);
     }
 }
 
