@@ -165,7 +165,7 @@ TEST(Contributions, TheSunsCoefficientIsItsSolidAngleTimesCosine) {
     double halfAngle = 0.533 / 2 * kPi / 180, solidAngle = 2 * kPi * (1 - std::cos(halfAngle));
     ASSERT_EQ(tally.byPatch.size(), 1u);
     EXPECT_EQ(tally.byPatch.begin()->first, tregenza.patchAt(toSun));
-    // The disc's few samples a sensor see its cosine vary by ±0.7 % across it; over 64 sensors within 0.1 %.
+    // In closed form at a sensor (the disc's cosine varies by ±0.7 % across it): within 0.1 % over 64 sensors.
     EXPECT_NEAR(tally.byPatch.begin()->second / queries, solidAngle * toSun.z, 1e-3 * solidAngle * toSun.z);
 }
 

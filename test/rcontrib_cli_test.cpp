@@ -185,6 +185,31 @@ std::vector<double> rowMeans(const std::string& text) {
     return means;
 }
 
+// The direct sun's matrix as Honeybee makes it: gendaymtx -D writes a light source per sun position (its
+// modifier in suns.mod), rcontrib -V -ab 0 gives each sensor each sun's illuminance. Under an open sky with
+// nothing in the way a sensor facing up gets L Ω cosθ from each (the disc's few samples: within 0.3 %).
+TEST(RcontribCli, TheDirectSunsMatrixHasEachSunsIlluminance) {
+    Case c("suns", "", "0 0 0 0 0 1\n");
+    std::string line = "gendaymtx -D suns.rad -M suns.mod -O0 -n -r 0.0 '" + (fs::path(BRUME_TEST_DATA) / "daymtx/chicago48.wea").string() +
+                       "' > /dev/null && rcontrib -I -V -ab 0 -faa -y 1 -M suns.mod suns.rad < rays.txt";
+    Output o = brume_test::runBrume(line, c.dir);
+    ASSERT_EQ(o.status, 0) << o.err;
+    std::vector<double> row = rows(o.out).at(0);
+    std::ifstream suns(c.dir / "suns.rad");
+    std::vector<double> expected;
+    for (std::string word; suns >> word;) {
+        if (word != "light") continue;
+        std::string name, zero;
+        double r, g, b, x, y, z, angle;
+        suns >> name >> zero >> zero >> zero >> r >> g >> b >> name >> name >> name >> zero >> zero >> zero >> x >> y >> z >> angle;
+        double omega = 2 * kPi * (1 - std::cos(angle / 2 * kPi / 180));
+        expected.push_back(r * omega * z / std::sqrt(x * x + y * y + z * z));
+    }
+    ASSERT_EQ(row.size(), 3 * expected.size());
+    ASSERT_GT(expected.size(), 10u);
+    for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(row[3 * i], expected[i], 3e-3 * expected[i]) << "sun " << i;
+}
+
 // Radiance's rfluxmtx, verbose, for bench/annual's sky (Honeybee's sky.dome: a uniform ground, Tregenza's sky):
 // the rcontrib options it runs, word for word; Brume's rfluxmtx says the same and gives what rcontrib gives
 // with them.

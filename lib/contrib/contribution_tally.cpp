@@ -7,7 +7,8 @@ namespace brume {
 ContributionTally::ContributionTally(const ModifierBins& bins, bool values, int channels)
     : bins_(bins), values_(values), channels_(channels), sums_(size_t(bins.columns()) * channels, 0.0) {
     evaluators_.reserve(bins.modifiers().size());
-    for (const ModifierBins::Tallied& m : bins.modifiers()) evaluators_.emplace_back(m.program);
+    for (const ModifierBins::Tallied& m : bins.modifiers())
+        evaluators_.emplace_back(m.constant ? std::nullopt : std::optional<cal::Evaluator>(std::in_place, m.program));
 }
 
 void ContributionTally::clear() { std::fill(sums_.begin(), sums_.end(), 0.0); }
@@ -24,7 +25,7 @@ void ContributionTally::add(const Contribution& c) {
         channels[cal::Px] = c.point.x, channels[cal::Py] = c.point.y, channels[cal::Pz] = c.point.z;
         channels[cal::T] = std::isfinite(c.distance) ? c.distance : integrator_detail::kDistantSourceDistance;
         channels[cal::Rdot] = -glm::dot(c.dir, c.normal);
-        cal::Evaluator& evaluator = evaluators_[m];
+        cal::Evaluator& evaluator = *evaluators_[m];
         evaluator.begin(channels);
         double value = evaluator(modifier.bin);
         if (!(value > -0.5)) return;  // Radiance's rcontrib ignores negative bins silently

@@ -3,6 +3,7 @@
 // expression at the ray toward the source, rounded to the nearest whole number; below −0.5 ignored; past the
 // last bin ignored with a warning.
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "cal/evaluator.h"
@@ -29,7 +30,7 @@ private:
     const ModifierBins& bins_;
     bool values_;
     int channels_;
-    std::vector<cal::Evaluator> evaluators_;  // one per modifier
+    std::vector<std::optional<cal::Evaluator>> evaluators_;  // one per modifier whose bin is not a constant
     std::vector<double> sums_;
     long outOfRange_ = 0;
     int firstOutOfRange_ = -1;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <unordered_map>
 
 #include "cal/compiler.h"
 #include "cal/embedded.h"
@@ -48,11 +49,11 @@ std::optional<double> number(const std::string& text) {
     return *end ? std::nullopt : std::optional<double>(v);
 }
 
-// The objects named `name` that may modify others: those a contribution's modifier may be.
-std::vector<int> modifiersNamed(const Scene& scene, const std::string& name) {
-    std::vector<int> found;
+// The objects that may modify others (those a contribution's modifier may be), by name.
+std::unordered_map<std::string, std::vector<int>> modifiersByName(const Scene& scene) {
+    std::unordered_map<std::string, std::vector<int>> found;
     for (size_t i = 0; i < scene.objects.size(); ++i)
-        if (scene.objects[i].name == name && isModifierType(scene.objects[i].type)) found.push_back(int(i));
+        if (isModifierType(scene.objects[i].type)) found[scene.objects[i].name].push_back(int(i));
     return found;
 }
 
@@ -61,34 +62,35 @@ std::vector<int> modifiersNamed(const Scene& scene, const std::string& name) {
 ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const std::vector<CalDefinition>& definitions,
                            const std::vector<ModifierRequest>& requests)
     : byObject_(scene.objects.size(), -1) {
+    const auto named = modifiersByName(scene);
     for (const ModifierRequest& r : requests) {
         if (r.name == "void") throw Error("cannot track 'void' modifier");
-        std::vector<int> objects = modifiersNamed(scene, r.name);
-        if (objects.empty()) throw Error("modifier '" + r.name + "' is not in the scene");
-        for (int o : objects) {
+        auto objects = named.find(r.name);
+        if (objects == named.end()) throw Error("modifier '" + r.name + "' is not in the scene");
+        for (int o : objects->second) {
             if (!render.emitter(o))
                 throw Error("modifier '" + r.name + "' (" + scene.objects[o].type +
                             ") is no light source: Brume tells the contributions of light, glow, illum and spotlight only");
             if (byObject_[o] >= 0) throw Error("duplicate modifier '" + r.name + "'");
             byObject_[o] = int(modifiers_.size());
         }
+        // A constant bin is one bin, whatever -bn says, and nothing to compile (thousands of suns' modifiers).
+        if (std::optional<double> constant = number(r.bin)) {
+            if (!(std::abs(*constant) < 0.5)) throw Error("illegal non-zero constant for bin (" + r.bin + ")");
+            modifiers_.push_back(Tallied{r.name, 1, columns_++, {}, {}, true});
+            continue;
+        }
         cal::Library library;
         loadDefinitions(library, definitions, r.parameters);
         cal::Compiler compiler(library);
         cal::ExprId bin = compiler.expression(r.bin, {}, {"-b", 1});
         cal::ExprId count = compiler.expression(r.binCount, {}, {"-bn", 1});
-        std::optional<double> constant = number(r.bin);
-        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, constant.has_value()};
+        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, false};
         cal::Evaluator evaluator(t.program);
         evaluator.begin(cal::Channels{});
-        if (constant) {
-            // A constant bin is one bin, whatever -bn says.
-            if (!(std::abs(*constant) < 0.5)) throw Error("illegal non-zero constant for bin (" + r.bin + ")");
-        } else {
-            double n = evaluator(count);
-            if (!(n >= 0.5) || n > 1e8) throw Error("unspecified or illegal bin count for modifier '" + r.name + "'");
-            t.bins = int(n + 0.5);
-        }
+        double n = evaluator(count);
+        if (!(n >= 0.5) || n > 1e8) throw Error("unspecified or illegal bin count for modifier '" + r.name + "'");
+        t.bins = int(n + 0.5);
         columns_ += t.bins;
         modifiers_.push_back(std::move(t));
     }

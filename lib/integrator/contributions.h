@@ -2,7 +2,8 @@
 // told source sample by source sample as the paths find them. A path carries its throughput forward
 // (PathState::throughput: what a unit of radiance along the ray adds to the query's value), and wherever
 // light is emitted into the value — a source a ray meets (with its multiple-importance share), a shadow ray's
-// sample, a sample aimed at the sky through a window or at a sunlit patch — the sink hears of the source's
+// sample (a uniform source's closed form on a diffuse surface: once, from the source's centre), a sample aimed
+// at the sky through a window or at a sunlit patch — the sink hears of the source's
 // modifier, the ray toward it, and the coefficient its radiance is multiplied by. Over one query the
 // coefficients times the radiances sum to the value the integrator returns.
 #pragma once

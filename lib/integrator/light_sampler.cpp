@@ -85,11 +85,11 @@ Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, 
     if (state.ambientLevel > 0 && !at.sampledByRays())
         if (auto one = oneSourceOf(at, surface, state, ctx, shares)) return *one;
     // Diffuse light of uniform sources: their unoccluded value in closed form (see directFrom), and how
-    // bright it is in all, for -dt. (Not where contributions are told: they come sample by sample.)
+    // bright it is in all, for -dt.
     std::vector<double>& closedForm = ctx.scratch.perSource;
     closedForm.assign(lights.size(), -1.0);
     double total = 0;
-    if (exactDirect(state) && at.lambertian() && !state.throughput)
+    if (exactDirect(state) && at.lambertian())
         for (size_t i = 0; i < lights.size(); ++i) {
             if (!samplesSource(lights[i], surface)) continue;
             closedForm[i] = lights[i].unoccludedIrradiance(at.point(), at.surface()->normal);
@@ -218,6 +218,13 @@ Spectrum LightSampler::directFrom(const Light& light, double closedForm, double 
         Spectrum unblocked = Spectrum(float(closedForm)) - blocked;
         for (int c = 0; c < unblocked.size(); ++c) unblocked[c] = std::max(0.f, unblocked[c]);
         sum += *at.lambertian() * e.radiance * unblocked * float(1 / kPi);
+        if (told) {  // told as one contribution from the source's centre
+            dvec3 toward = light.isDistant() ? light.direction() : light.center() - point;
+            double distance = light.isDistant() ? std::numeric_limits<double>::infinity() : glm::length(toward);
+            toward = glm::normalize(toward);
+            contribute(ctx, state, modifier, point, toward, distance, -toward,
+                       *at.lambertian() * unblocked * float(scale / kPi), e.radiance);
+        }
     }
     return sum;
 }
