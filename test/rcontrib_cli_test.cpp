@@ -121,6 +121,16 @@ TEST(RcontribCli, ValuesAveragesAndBinaryRecords) {
     EXPECT_NEAR(first[0], kPi / 2, 0.1);  // the east half of the sky
 }
 
+TEST(RcontribCli, SameRecordsOnAnyNumberOfThreads) {
+    std::string rays;
+    for (int i = 0; i < 40; ++i) rays += std::to_string(0.1 * i) + " 0 0 0 " + std::to_string(0.05 * i) + " 1\n";
+    Case c("threads", openSky() + "grey polygon wall 0 0 12 -2 1 -1 2 1 -1 2 1 3 -2 1 3\n", rays);
+    std::string args = std::string("-u- -I -ab 3 -ad 64 -faf ") + kReinhart + " -m sky_glow -m ground_glow";
+    Output one = c.run("-n 1 " + args), two = c.run("-n 2 " + args);
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(one.out.substr(one.out.find("\n\n")), two.out.substr(two.out.find("\n\n")));
+}
+
 TEST(RcontribCli, FilesPerModifierAndPerBin) {
     Case c("files", openSky(), "0 0 0 0 0 1\n0 0 0 1 0 0\n");
     Output o = c.run("-I -ab 1 -ad 64 -o o_%s.txt -b 'if(Dx,1,0)' -bn 2 -m sky_glow -m ground_glow");
