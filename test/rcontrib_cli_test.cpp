@@ -121,6 +121,19 @@ TEST(RcontribCli, ValuesAveragesAndBinaryRecords) {
     EXPECT_NEAR(first[0], kPi / 2, 0.1);  // the east half of the sky
 }
 
+// With spectral sampling (-cs) a record holds every band, as Radiance 6.1's: NCOMP and WAVELENGTH_SPLITS say so.
+TEST(RcontribCli, SpectralCoefficientsHoldEveryBand) {
+    Case c("spectral", openSky(), "0 0 0 0 0 1\n");
+    Output o = c.run("-cs 5 -I -ab 1 -ad 64 -y 1 -m sky_glow");
+    ASSERT_EQ(o.status, 0) << o.err;
+    EXPECT_EQ(headerValue(o.out, "NCOMP="), "5");
+    EXPECT_EQ(headerValue(o.out, "WAVELENGTH_SPLITS="), " 780 588 480 380");
+    auto r = rows(o.out);
+    ASSERT_EQ(r.size(), 1u);
+    ASSERT_EQ(r[0].size(), 5u);
+    for (double v : r[0]) EXPECT_NEAR(v, kPi, 1e-5);  // a grey sky: π in every band
+}
+
 TEST(RcontribCli, SameRecordsOnAnyNumberOfThreads) {
     std::string rays;
     for (int i = 0; i < 40; ++i) rays += std::to_string(0.1 * i) + " 0 0 0 " + std::to_string(0.05 * i) + " 1\n";

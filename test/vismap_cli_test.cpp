@@ -299,7 +299,9 @@ TEST_F(Vismap, LossesAreInterpolatedBetweenInstantsAndReported) {
         EXPECT_EQ(l.at("how"), l.at("sign") == "sign" ? "interpolated" : "bracketed") << l.at("sign") << l.at("observer");
         EXPECT_EQ(l.at("after_s"), "10");
         EXPECT_EQ(l.at("before_s"), "20");
-        if (l.at("sign") == "sign") EXPECT_NEAR(number(l, "lost_s"), 15, 1e-3);
+        if (l.at("sign") == "sign") {
+            EXPECT_NEAR(number(l, "lost_s"), 15, 1e-3);
+        }
     }
     std::vector<Row> summary = csv(brume_test::slurp(dir_ / "study_summary.csv"));
     ASSERT_EQ(summary.size(), 4u);  // two instants, the sign and any

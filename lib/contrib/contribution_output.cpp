@@ -93,6 +93,7 @@ void ContributionOutput::writeHeader(Stream& s, const ModifierBins& bins) const 
     for (const std::string& line : settings_.headerLines) h += line + "\n";
     h += softwareAndDates();
     h += "NCOMP=" + std::to_string(settings_.channels) + "\n";
+    for (const std::string& line : settings_.colorLines) h += line + "\n";
     if (!s.name.empty()) {
         int first = -1, last = -1;
         for (size_t m = 0; m < bins.modifiers().size(); ++m) {

@@ -20,6 +20,7 @@ struct OutputSettings {
     bool overwrite = false;    // -fo
     int rows = 0;              // NROWS (-y), 0: not said
     int channels = 3;          // NCOMP
+    std::vector<std::string> colorLines;   // after NCOMP: WAVELENGTH_SPLITS= for spectral channels
     std::vector<std::string> headerLines;  // the scene's header and the command line, without "#?RADIANCE"
 };
 

@@ -11,6 +11,7 @@
 #include "io/ray_reader.h"
 #include "render/sequence.h"
 #include "scene/reader.h"
+#include "spectrum/color_output.h"
 #include "util/error.h"
 #include "util/header.h"
 
@@ -138,6 +139,7 @@ OutputSettings outputSettings(const ContributionRun& o, const Scene& scene, cons
     out.overwrite = o.overwrite;
     out.rows = o.yres;
     out.channels = Spectrum(0.f).size();
+    if (out.channels > 3) out.colorLines = ColorOutput{ColorOutput::Kind::Spectral}.headerLines();
     out.headerLines = scene.headerLines;
     std::erase_if(out.headerLines,
                   [](const std::string& l) { return l.rfind("FORMAT=", 0) == 0 || l.rfind("#?", 0) == 0; });
