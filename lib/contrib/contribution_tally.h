@@ -27,6 +27,8 @@ public:
     int firstOutOfRange() const { return firstOutOfRange_; }
 
 private:
+    double binValue(int m, const Contribution& c);
+
     const ModifierBins& bins_;
     bool values_;
     int channels_;

@@ -49,6 +49,29 @@ std::optional<double> number(const std::string& text) {
     return *end ? std::nullopt : std::optional<double>(v);
 }
 
+// Whether the definitions are Brume's own reinhartb.cal alone (not one found along RAYPATH).
+bool shippedReinhartOnly(const std::vector<CalDefinition>& definitions) {
+    return definitions.size() == 1 && definitions[0].kind == CalDefinition::Kind::File &&
+           definitions[0].text == "reinhartb.cal" &&
+           readLibraryFile("reinhartb.cal", cal::embeddedCalFiles(), "function file").origin == "reinhartb.cal";
+}
+
+// rbin of Brume's reinhartb.cal with the parameters the program gives, natively; nothing with jitter or a
+// fractional MF (the .cal then).
+std::optional<ReinhartBins> nativeReinhart(const cal::Library& library) {
+    cal::Compiler compiler(library);
+    std::vector<cal::ExprId> ids;
+    for (const char* name : {"MF", "RHS", "JTR", "rNx", "rNy", "rNz", "Ux", "Uy", "Uz"})
+        ids.push_back(compiler.expression(name, {}, {"-p", 1}));
+    cal::Program program = std::move(compiler).finish();
+    cal::Evaluator evaluator(program);
+    evaluator.begin(cal::Channels{});
+    double v[9];
+    for (int i = 0; i < 9; ++i) v[i] = evaluator(ids[i]);
+    if (v[2] != 0 || !(v[0] >= 1) || v[0] != std::floor(v[0]) || v[0] > 64) return std::nullopt;
+    return ReinhartBins(ReinhartFrame{v[0], v[1], {v[3], v[4], v[5]}, {v[6], v[7], v[8]}});
+}
+
 // The objects that may modify others (those a contribution's modifier may be), by name.
 std::unordered_map<std::string, std::vector<int>> modifiersByName(const Scene& scene) {
     std::unordered_map<std::string, std::vector<int>> found;
@@ -77,7 +100,7 @@ ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const 
         // A constant bin is one bin, whatever -bn says, and nothing to compile (thousands of suns' modifiers).
         if (std::optional<double> constant = number(r.bin)) {
             if (!(std::abs(*constant) < 0.5)) throw Error("illegal non-zero constant for bin (" + r.bin + ")");
-            modifiers_.push_back(Tallied{r.name, 1, columns_++, {}, {}, true});
+            modifiers_.push_back(Tallied{r.name, 1, columns_++, {}, {}, true, std::nullopt});
             continue;
         }
         cal::Library library;
@@ -85,7 +108,8 @@ ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const 
         cal::Compiler compiler(library);
         cal::ExprId bin = compiler.expression(r.bin, {}, {"-b", 1});
         cal::ExprId count = compiler.expression(r.binCount, {}, {"-bn", 1});
-        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, false};
+        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, false, std::nullopt};
+        if (r.bin == "rbin" && shippedReinhartOnly(definitions)) t.reinhart = nativeReinhart(library);
         cal::Evaluator evaluator(t.program);
         evaluator.begin(cal::Channels{});
         double n = evaluator(count);

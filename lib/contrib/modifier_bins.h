@@ -2,10 +2,12 @@
 // (an expression of the ray toward the source, -b, out of -bn bins) with the definitions of -e and -f and the
 // modifier's own parameters (-p), as Radiance's rcontrib evaluates them.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cal/program.h"
+#include "contrib/reinhart_bins.h"
 #include "world/render_scene.h"
 
 namespace brume {
@@ -39,6 +41,7 @@ public:
         cal::Program program;
         cal::ExprId bin;
         bool constant;  // the bin is the number 0: one bin, nothing to evaluate
+        std::optional<ReinhartBins> reinhart;  // Brume's reinhartb.cal's rbin, computed natively
     };
     const std::vector<Tallied>& modifiers() const { return modifiers_; }
     // Every modifier's bins, one after another.
