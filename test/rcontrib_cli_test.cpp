@@ -158,6 +158,13 @@ TEST(RcontribCli, FilesPerModifierAndPerBin) {
     EXPECT_NE(again.status, 0);
     EXPECT_NE(again.err.find("o_sky_glow.txt: exists (-fo to overwrite it)"), std::string::npos) << again.err;
     EXPECT_EQ(slurp(c.dir / "o_sky_glow.txt"), sky);
+    // -o applies to the modifiers after it, as in Radiance: the sky to the standard output, the ground to a file.
+    Output split = c.run("-fo -I -ab 1 -ad 64 -m sky_glow -o g.txt -m ground_glow");
+    ASSERT_EQ(split.status, 0) << split.err;
+    EXPECT_EQ(headerValue(split.out, "NCOLS="), "1");
+    EXPECT_EQ(headerValue(split.out, "MODIFIER="), "");
+    EXPECT_EQ(headerValue(slurp(c.dir / "g.txt"), "MODIFIER="), "ground_glow");
+    EXPECT_EQ(rows(slurp(c.dir / "g.txt")).size(), 2u);
     Output perBin = c.run("-fo -I -ab 1 -ad 64 -o b_%s_%02d.txt -b 'if(Dx,1,0)' -bn 2 -m sky_glow");
     ASSERT_EQ(perBin.status, 0) << perBin.err;
     std::string bin1 = slurp(c.dir / "b_sky_glow_01.txt");

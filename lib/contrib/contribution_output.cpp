@@ -51,28 +51,25 @@ const char* formatWord(char format) { return format == 'f' ? "float" : format ==
 }  // namespace
 
 ContributionOutput::ContributionOutput(const ModifierBins& bins, const OutputSettings& settings) : settings_(settings) {
-    if (settings.pattern.empty()) {
-        Stream s;
-        s.file = stdout;
-        for (int c = 0; c < bins.columns(); ++c) s.columns.push_back(c);
-        streams_.push_back(std::move(s));
-    } else {
-        if (settings.pattern[0] == '!') throw Error("-o " + settings.pattern + ": commands as outputs are not supported");
-        std::map<std::string, size_t> byName;
-        for (const ModifierBins::Tallied& m : bins.modifiers())
-            for (int b = 0; b < m.bins; ++b) {
-                std::string name = outputName(settings.pattern, m.name, b);
-                auto [it, added] = byName.emplace(name, streams_.size());
-                if (added) streams_.push_back(Stream{name, {}, nullptr, {}});
-                streams_[it->second].columns.push_back(m.column + b);
-            }
-        for (Stream& s : streams_)
-            if (exists(s.name) && !settings.overwrite) throw Error(s.name + ": exists (-fo to overwrite it)");
-        for (Stream& s : streams_) {
-            s.partial = s.name + ".partial" + std::to_string(::getpid());
-            s.file = std::fopen(s.partial.c_str(), "wb");
-            if (!s.file) throw Error(s.name + ": cannot write: " + std::strerror(errno));
+    // Streams by name ("" the standard output), in the order of their first columns.
+    std::map<std::string, size_t> byName;
+    for (const ModifierBins::Tallied& m : bins.modifiers()) {
+        if (!m.output.empty() && m.output[0] == '!')
+            throw Error("-o " + m.output + ": commands as outputs are not supported");
+        for (int b = 0; b < m.bins; ++b) {
+            std::string name = m.output.empty() ? "" : outputName(m.output, m.name, b);
+            auto [it, added] = byName.emplace(name, streams_.size());
+            if (added) streams_.push_back(Stream{name, {}, name.empty() ? stdout : nullptr, {}});
+            streams_[it->second].columns.push_back(m.column + b);
         }
+    }
+    for (Stream& s : streams_)
+        if (!s.name.empty() && exists(s.name) && !settings.overwrite) throw Error(s.name + ": exists (-fo to overwrite it)");
+    for (Stream& s : streams_) {
+        if (s.name.empty()) continue;
+        s.partial = s.name + ".partial" + std::to_string(::getpid());
+        s.file = std::fopen(s.partial.c_str(), "wb");
+        if (!s.file) throw Error(s.name + ": cannot write: " + std::strerror(errno));
     }
     if (settings.header)
         for (Stream& s : streams_) writeHeader(s, bins);

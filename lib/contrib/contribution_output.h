@@ -1,6 +1,6 @@
-// Where rcontrib's records go, as Radiance's rcontrib writes them: to the standard output, every modifier's
-// bins on one row; or to the files an -o pattern names (%s: the modifier, %d: the bin, so a file per modifier
-// or per bin), each with its header (the command, NCOMP, MODIFIER= and BIN= where one, NROWS= when -y says
+// Where rcontrib's records go, as Radiance's rcontrib writes them: each modifier's bins to the files its -o
+// pattern names (%s: the modifier, %d: the bin, so a file per modifier or per bin), or without one to the
+// standard output, those modifiers' bins on one row; each stream with its header (the command, NCOMP, MODIFIER= and BIN= where one, NROWS= when -y says
 // how many, NCOLS=, FORMAT=). ASCII elements are each component "%e" and a tab; binary ones native floats
 // or doubles. Files are written beside their names and renamed into place when complete: a run that fails
 // leaves none half-written (and an existing file is refused unless -fo).
@@ -14,7 +14,6 @@
 namespace brume {
 
 struct OutputSettings {
-    std::string pattern;       // -o; empty: the standard output
     char format = 'a';         // a, f, d
     bool header = true;        // -h
     bool overwrite = false;    // -fo

@@ -25,12 +25,6 @@ void ContributionRun::addModifier(const std::string& name) {
     modifiers.push_back(r);
 }
 
-void ContributionRun::setOutputs(const std::string& pattern) {
-    if (!modifiers.empty() && pattern != outputs)
-        throw Error("-o: Brume writes every modifier by one pattern (give -o once, before the first -m)");
-    outputs = pattern;
-}
-
 std::vector<std::string> functionFileWords(std::vector<std::string> words) {
     expandResponseFiles(words);
     for (std::string& w : words)
@@ -88,7 +82,8 @@ OptionTable contributionOptions(ContributionRun& o) {
     });
     t.addAttached("-f", "-f file: function file; -f[io]: formats a, f, d; -fo: overwrite outputs",
                   [&o](const std::string& v) { setFormats(o, v); });
-    t.add("-o", 1, "output file pattern (%s modifier, %d bin)", [&o](const auto& a) { o.setOutputs(a[0]); });
+    t.add("-o", 1, "output file pattern (%s modifier, %d bin) of the modifiers that follow",
+          [&o](const auto& a) { o.next.output = a[0]; });
     t.add("-p", 1, "parameters (a=1,b=2) of the modifiers that follow", [&o](const auto& a) { o.next.parameters = a[0]; });
     t.add("-b", 1, "bin expression of the modifiers that follow", [&o](const auto& a) { o.next.bin = a[0]; });
     t.add("-bn", 1, "number of bins of the modifiers that follow", [&o](const auto& a) { o.next.binCount = a[0]; });
@@ -133,7 +128,6 @@ bool nextRecords(RecordSource& src, int per, size_t max, std::vector<InputRay>& 
 
 OutputSettings outputSettings(const ContributionRun& o, const Scene& scene, const std::vector<std::string>& command) {
     OutputSettings out;
-    out.pattern = o.outputs;
     out.format = o.outFormat;
     out.header = o.header;
     out.overwrite = o.overwrite;

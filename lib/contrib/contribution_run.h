@@ -19,14 +19,11 @@ struct ContributionRun {
     bool irradiance = false, irradianceAtHit = false, header = true, values = false, overwrite = false;
     int accumulate = 1, xres = 0, yres = 0;
     char inFormat = 'a', outFormat = 'a';
-    std::string outputs;  // -o pattern, empty: the standard output
     std::vector<CalDefinition> definitions;
     std::vector<ModifierRequest> modifiers;
-    ModifierRequest next;  // the -b, -bn and -p the next -m takes
+    ModifierRequest next;  // the -b, -bn, -p and -o the next -m takes
 
     void addModifier(const std::string& name);
-    // Sets the -o pattern of the modifiers that follow (Brume's rcontrib takes one for all).
-    void setOutputs(const std::string& pattern);
 };
 
 // rcontrib's -f names a function file where the word is -f alone, formats where letters follow it: in

@@ -100,7 +100,7 @@ ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const 
         // A constant bin is one bin, whatever -bn says, and nothing to compile (thousands of suns' modifiers).
         if (std::optional<double> constant = number(r.bin)) {
             if (!(std::abs(*constant) < 0.5)) throw Error("illegal non-zero constant for bin (" + r.bin + ")");
-            modifiers_.push_back(Tallied{r.name, 1, columns_++, {}, {}, true, std::nullopt});
+            modifiers_.push_back(Tallied{r.name, 1, columns_++, {}, {}, true, std::nullopt, r.output});
             continue;
         }
         cal::Library library;
@@ -108,7 +108,7 @@ ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const 
         cal::Compiler compiler(library);
         cal::ExprId bin = compiler.expression(r.bin, {}, {"-b", 1});
         cal::ExprId count = compiler.expression(r.binCount, {}, {"-bn", 1});
-        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, false, std::nullopt};
+        Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, false, std::nullopt, r.output};
         if (r.bin == "rbin" && shippedReinhartOnly(definitions)) t.reinhart = nativeReinhart(library);
         cal::Evaluator evaluator(t.program);
         evaluator.begin(cal::Channels{});

@@ -24,6 +24,7 @@ struct ModifierRequest {
     std::string bin = "0";       // -b: the bin of a contribution; a constant must be 0
     std::string binCount = "1";  // -bn: a count, or an expression of the definitions (Nrbins)
     std::string parameters;      // -p: "MF=1,rNx=0" (set after the definitions, for this modifier only)
+    std::string output;          // -o: its file name pattern, empty: the standard output
 };
 
 class ModifierBins {
@@ -42,6 +43,7 @@ public:
         cal::ExprId bin;
         bool constant;  // the bin is the number 0: one bin, nothing to evaluate
         std::optional<ReinhartBins> reinhart;  // Brume's reinhartb.cal's rbin, computed natively
+        std::string output;                    // -o pattern, empty: the standard output
     };
     const std::vector<Tallied>& modifiers() const { return modifiers_; }
     // Every modifier's bins, one after another.

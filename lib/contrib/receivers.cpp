@@ -221,7 +221,7 @@ void addReceiver(const Receiver& r, ContributionRun& run, std::vector<std::strin
     dvec3 n = glm::normalize(r.normal);
     dvec3 up = r.up ? *r.up : std::abs(n.z) < 0.7 ? dvec3(0, 0, 1) : dvec3(0, 1, 0);
     if (!r.output.empty()) {
-        run.setOutputs(r.output);
+        run.next.output = r.output;
         words.insert(words.end(), {"-o", r.output});
     }
     char kind = char(std::tolower(static_cast<unsigned char>(r.hemisphere[0])));
