@@ -15,12 +15,8 @@ int run(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
     ContributionRun o;
     OptionTable table = contributionOptions(o);
-    std::vector<std::string> words = functionFileWords({argv + 1, argv + argc});
-    std::vector<char*> args{argv[0]};
-    for (std::string& w : words) args.push_back(w.data());
-    auto line = parseCommandLine(int(args.size()), args.data(), table, o.program, kUsage, "Multithreading\nAccumulation\n");
+    auto line = parseContributionCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nAccumulation\n");
     if (!line) return 0;
-    restoreFunctionFileWords(line->command);
     runContributions(o, line->scene, line->command, std::cin);
     return 0;
 }

@@ -32,12 +32,8 @@ int run(int argc, char** argv) {
     bool verbose = false;
     OptionTable table = contributionOptions(o);
     table.addBool("-v", verbose, "verbose: say the rcontrib command it runs");
-    std::vector<std::string> words = functionFileWords({argv + 1, argv + argc});
-    std::vector<char*> args{argv[0]};
-    for (std::string& w : words) args.push_back(w.data());
-    auto line = parseCommandLine(int(args.size()), args.data(), table, o.program, kUsage, "Multithreading\n");
+    auto line = parseContributionCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\n");
     if (!line) return 0;
-    restoreFunctionFileWords(line->command);
     const std::vector<std::string>& operands = line->scene;
     if (operands.size() < 2) throw UsageError("missing receiver file", kUsage);
     if (operands[0] != "-")

@@ -71,11 +71,9 @@ void Library::redefine(std::string_view text, const std::string& origin) {
 void Library::define(Definition d, bool quietly) {
     std::string key = qualified(d.name, d.context);
     auto& slot = definitions_[key];
-    if (quietly) {
-        // a parameter replaces whatever was there
-    } else if (slot && !sameDefinition(*slot, d))
+    if (!quietly && slot && !sameDefinition(*slot, d))
         warn(d.where.str() + ": " + key + (slot->constant ? ": constant redefined" : ": redefined"));
-    else if (!slot && d.isFunction() && findBuiltin(d.name))
+    else if (!quietly && !slot && d.isFunction() && findBuiltin(d.name))
         warn(d.where.str() + ": " + key + ": definition hides library function");
     if (slot) replaced_.push_back(std::move(slot));
     slot = std::make_unique<const Definition>(std::move(d));

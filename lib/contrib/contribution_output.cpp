@@ -59,8 +59,10 @@ ContributionOutput::ContributionOutput(const ModifierBins& bins, const OutputSet
         for (int b = 0; b < m.bins; ++b) {
             std::string name = m.output.empty() ? "" : outputName(m.output, m.name, b);
             auto [it, added] = byName.emplace(name, streams_.size());
-            if (added) streams_.push_back(Stream{name, {}, name.empty() ? stdout : nullptr, {}});
-            streams_[it->second].columns.push_back(m.column + b);
+            if (added) streams_.push_back(Stream{name, {}, name.empty() ? stdout : nullptr, {}, m.name, b});
+            Stream& s = streams_[it->second];
+            s.columns.push_back(m.column + b);
+            if (s.modifier != m.name) s.modifier.clear();
         }
     }
     for (Stream& s : streams_)
@@ -72,7 +74,7 @@ ContributionOutput::ContributionOutput(const ModifierBins& bins, const OutputSet
         if (!s.file) throw Error(s.name + ": cannot write: " + std::strerror(errno));
     }
     if (settings.header)
-        for (Stream& s : streams_) writeHeader(s, bins);
+        for (Stream& s : streams_) writeHeader(s);
 }
 
 ContributionOutput::~ContributionOutput() {
@@ -85,23 +87,15 @@ ContributionOutput::~ContributionOutput() {
 }
 
 // NCOMP, then the modifier and bin where the stream holds one, NROWS, NCOLS, FORMAT.
-void ContributionOutput::writeHeader(Stream& s, const ModifierBins& bins) const {
+void ContributionOutput::writeHeader(Stream& s) const {
     std::string h = "#?RADIANCE\n";
     for (const std::string& line : settings_.headerLines) h += line + "\n";
     h += softwareAndDates();
     h += "NCOMP=" + std::to_string(settings_.channels) + "\n";
     for (const std::string& line : settings_.colorLines) h += line + "\n";
-    if (!s.name.empty()) {
-        int first = -1, last = -1;
-        for (size_t m = 0; m < bins.modifiers().size(); ++m) {
-            const ModifierBins::Tallied& t = bins.modifiers()[m];
-            for (int c : s.columns)
-                if (c >= t.column && c < t.column + t.bins) last = int(m), first = first < 0 ? int(m) : first;
-        }
-        if (first == last && first >= 0) {
-            h += "MODIFIER=" + bins.modifiers()[first].name + "\n";
-            if (s.columns.size() == 1) h += "BIN=" + std::to_string(s.columns[0] - bins.modifiers()[first].column) + "\n";
-        }
+    if (!s.name.empty() && !s.modifier.empty()) {
+        h += "MODIFIER=" + s.modifier + "\n";
+        if (s.columns.size() == 1) h += "BIN=" + std::to_string(s.bin) + "\n";
     }
     if (settings_.rows > 0) h += "NROWS=" + std::to_string(settings_.rows) + "\n";
     h += "NCOLS=" + std::to_string(s.columns.size()) + "\n";

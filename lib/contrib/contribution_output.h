@@ -44,8 +44,10 @@ private:
         std::string partial;
         std::FILE* file = nullptr;
         std::vector<int> columns;
+        std::string modifier;  // the modifier all its columns are of, empty if several (for MODIFIER=)
+        int bin = 0;           // the bin of its first column (BIN= when it has one)
     };
-    void writeHeader(Stream& s, const ModifierBins& bins) const;
+    void writeHeader(Stream& s) const;
 
     OutputSettings settings_;
     std::vector<Stream> streams_;

@@ -17,27 +17,16 @@
 
 namespace brume {
 
-const char* const kFunctionFileOption = "--function-file";
-
 void ContributionRun::addModifier(const std::string& name) {
     ModifierRequest r = next;
     r.name = name;
     modifiers.push_back(r);
 }
 
-std::vector<std::string> functionFileWords(std::vector<std::string> words) {
-    expandResponseFiles(words);
-    for (std::string& w : words)
-        if (w == "-f") w = kFunctionFileOption;
-    return words;
-}
-
-void restoreFunctionFileWords(std::vector<std::string>& words) {
-    for (std::string& w : words)
-        if (w == kFunctionFileOption) w = "-f";
-}
-
 namespace {
+
+// What the option table takes a -f before a file name for.
+const char* const kFunctionFileOption = "--function-file";
 
 // -M: modifier names, separated by white space.
 void addModifierFile(ContributionRun& o, const std::string& path) {
@@ -59,6 +48,23 @@ void setFormats(ContributionRun& o, const std::string& v) {
 }
 
 }  // namespace
+
+std::optional<CommandLine> parseContributionCommandLine(int argc, char** argv, const OptionTable& table,
+                                                        const ProgramOptions& program, const std::string& usage,
+                                                        const std::string& features) {
+    std::vector<std::string> words(argv + 1, argv + argc);
+    expandResponseFiles(words);
+    std::vector<char*> args{argv[0]};
+    for (std::string& w : words) {
+        if (w == "-f") w = kFunctionFileOption;
+        args.push_back(w.data());
+    }
+    auto line = parseCommandLine(int(args.size()), args.data(), table, program, usage, features);
+    if (line)
+        for (std::string& w : line->command)
+            if (w == kFunctionFileOption) w = "-f";
+    return line;
+}
 
 OptionTable contributionOptions(ContributionRun& o) {
     OptionTable t;

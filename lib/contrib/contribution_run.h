@@ -26,15 +26,13 @@ struct ContributionRun {
     void addModifier(const std::string& name);
 };
 
-// rcontrib's -f names a function file where the word is -f alone, formats where letters follow it: in
-// the words a table from contributionOptions parses, the first must be this (functionFileWords).
-extern const char* const kFunctionFileOption;
-// `words` with every -f alone made kFunctionFileOption (@files expanded first), and back.
-std::vector<std::string> functionFileWords(std::vector<std::string> words);
-void restoreFunctionFileWords(std::vector<std::string>& words);
-
 // The options of rcontrib's command line, applied to `run` as they are parsed.
 OptionTable contributionOptions(ContributionRun& run);
+// parseCommandLine for a table made by contributionOptions (and more options of a program's own): rcontrib's
+// -f names a function file where the word is -f alone, formats where letters follow it.
+std::optional<CommandLine> parseContributionCommandLine(int argc, char** argv, const OptionTable& table,
+                                                        const ProgramOptions& program, const std::string& usage,
+                                                        const std::string& features);
 
 // Traces the records of rays read from `rays` in `sceneFiles` (octrees and scene files), and writes them
 // where `run` says; `command` names the run in the output's header. Throws Error for what cannot be told

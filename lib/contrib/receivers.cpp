@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -114,17 +115,6 @@ std::optional<ReceivingSurface> surfaceOf(const std::string& type, const std::ve
     return std::nullopt;
 }
 
-// Reads "count word…" from `in`.
-template <class T>
-std::vector<T> counted(std::istream& in, const std::string& what, const SourceLocation& where) {
-    long n;
-    if (!(in >> n) || n < 0 || n > 100000) throw Error(where, "bad " + what + " count");
-    std::vector<T> v(n);
-    for (T& x : v)
-        if (!(in >> x)) throw Error(where, "bad " + what + " argument");
-    return v;
-}
-
 }  // namespace
 
 std::vector<Receiver> readReceivers(const std::string& path) {
@@ -173,23 +163,30 @@ std::vector<Receiver> readReceivers(const std::string& path) {
             next("alias");
             continue;
         }
-        std::string rest;
-        for (int part = 0; part < 3; ++part) {
+        // Its strings, integers and reals, each a count and that many words.
+        auto group = [&]() {
             long n;
-            std::string count = next("argument count");
             try {
-                n = std::stol(count);
-            } catch (...) {
+                n = std::stol(next("argument count"));
+            } catch (const std::logic_error&) {
                 throw Error(at, "bad argument count for '" + name + "'");
             }
             if (n < 0 || n > 100000) throw Error(at, "bad argument count for '" + name + "'");
-            rest += count + " ";
-            for (long k = 0; k < n; ++k) rest += next("argument") + " ";
+            std::vector<std::string> out;
+            for (long k = 0; k < n; ++k) out.push_back(next("argument"));
+            return out;
+        };
+        group();  // strings: none a surface takes here
+        group();  // integers
+        std::vector<double> reals;
+        for (const std::string& w : group()) {
+            size_t used = 0;
+            try {
+                reals.push_back(std::stod(w, &used));
+            } catch (const std::logic_error&) {
+            }
+            if (used != w.size()) throw Error(at, "bad real argument '" + w + "' of '" + name + "'");
         }
-        std::istringstream args(rest);
-        counted<std::string>(args, "string", at);
-        counted<long>(args, "integer", at);
-        std::vector<double> reals = counted<double>(args, "real", at);
         std::optional<ReceivingSurface> s = surfaceOf(type, reals, name, at);
         if (!s) continue;
         if (!(s->area > 0)) {

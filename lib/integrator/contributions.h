@@ -31,14 +31,10 @@ protected:
     ~ContributionSink() = default;
 };
 
-// A child ray's throughput: its parent's times `factor`, kept in `storage`, which must outlive the child's
-// tracing. Nothing where no one collects contributions.
-inline void carryThroughput(const PathState& parent, PathState& child, const Spectrum& factor, Spectrum& storage) {
-    if (!parent.throughput) return;
-    storage = *parent.throughput * factor;
-    child.throughput = &storage;
-}
-inline void carryThroughput(const PathState& parent, PathState& child, float factor, Spectrum& storage) {
+// A child ray's throughput: its parent's times `factor` (a Spectrum or a float), kept in `storage`, which must
+// outlive the child's tracing. Nothing where no one collects contributions.
+template <class Factor>
+void carryThroughput(const PathState& parent, PathState& child, const Factor& factor, Spectrum& storage) {
     if (!parent.throughput) return;
     storage = *parent.throughput * factor;
     child.throughput = &storage;

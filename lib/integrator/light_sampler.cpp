@@ -99,12 +99,7 @@ Spectrum LightSampler::sourcesLd(const Scatterer& at, const SurfaceId& surface, 
     for (size_t i = 0; i < lights.size(); ++i) {
         if (!samplesSource(lights[i], surface)) continue;
         double share = closedForm[i] > 0 && total > 0 ? closedForm[i] * brightness(lights[i].emitter().radiance) / total : 1.0;
-        // The share the source keeps here: known first where contributions are told, else only where it shines.
-        auto kept = [&] { return shares ? shares->rayShare(lights[i], at, surface, state, ctx) : 1.0; };
-        double told = state.throughput ? kept() : 1.0;
-        Spectrum part = directFrom(lights[i], closedForm[i], share, told, at, surface, state, ctx);
-        if (shares && !part.isBlack()) part *= float(state.throughput ? told : kept());
-        sum += part;
+        sum += keptFrom(lights[i], closedForm[i], share, 1.0, at, surface, state, ctx, shares);
     }
     if (mirrorImagesOn()) sum += directViaMirrors(at, surface, state, ctx);
     return sum;
@@ -142,12 +137,21 @@ std::optional<Spectrum> LightSampler::oneSourceOf(const Scatterer& at, const Sur
         chosen = i;
         if ((u -= probability(i)) < 0) break;
     }
-    double p = probability(chosen);
-    auto kept = [&] { return shares ? shares->rayShare(lights[chosen], at, surface, state, ctx) : 1.0; };
-    double told = state.throughput ? kept() : 1.0;
-    Spectrum value = directFrom(lights[chosen], -1, 1.0, told / p, at, surface, state, ctx) * float(1 / p);
-    if (shares && !value.isBlack()) value *= float(state.throughput ? told : kept());
+    Spectrum value = keptFrom(lights[chosen], -1, 1.0, 1 / probability(chosen), at, surface, state, ctx, shares);
     if (mirrorImagesOn()) value += directViaMirrors(at, surface, state, ctx);
+    return value;
+}
+
+// One source's light taken with `weight` (1, or 1/p where it stands for all the sources), times the share it
+// keeps at `at` (SourceShares): asked first where contributions are told (its samples carry it), else only where
+// the source shines.
+Spectrum LightSampler::keptFrom(const Light& light, double closedForm, double share, double weight, const Scatterer& at,
+                                const SurfaceId& surface, const PathState& state, PathContext& ctx,
+                                const SourceShares* shares) const {
+    auto kept = [&] { return shares ? shares->rayShare(light, at, surface, state, ctx) : 1.0; };
+    double told = state.throughput ? kept() : 1.0;
+    Spectrum value = directFrom(light, closedForm, share, told * weight, at, surface, state, ctx) * float(weight);
+    if (shares && !value.isBlack()) value *= float(state.throughput ? told : kept());
     return value;
 }
 

@@ -75,6 +75,9 @@ private:
     // through: Clear or Blocked where all or none, else Unsure with `t`, per channel.
     Occlusion passage(const Ray& shadow, const Light& light, double distance, const PathState& state,
                       PathContext& ctx, Spectrum& t) const;
+    Spectrum keptFrom(const Light& light, double closedForm, double share, double weight, const Scatterer& at,
+                      const SurfaceId& surface, const PathState& state, PathContext& ctx,
+                      const SourceShares* shares) const;
     Spectrum directFrom(const Light& light, double closedForm, double share, double scale, const Scatterer& at,
                         const SurfaceId& surface, const PathState& state, PathContext& ctx) const;
     Spectrum directViaMirrors(const Scatterer& at, const SurfaceId& surface, const PathState& state,
