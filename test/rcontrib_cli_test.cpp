@@ -134,6 +134,32 @@ TEST(RcontribCli, SpectralCoefficientsHoldEveryBand) {
     for (double v : r[0]) EXPECT_NEAR(v, kPi, 1e-5);  // a grey sky: π in every band
 }
 
+// A reinhartb.cal of one's own, found first along RAYPATH, is the one that bins (Brume's own is computed
+// natively, but only when it is the file read).
+TEST(RcontribCli, AReinhartbCalOfOnesOwnBins) {
+    Case c("own_cal", openSky(), "0 0 0 0 0 1\n");
+    std::ofstream(c.dir / "reinhartb.cal") << "rbin = 0;\nNrbins = 146;\n";
+    Output o = brume_test::runBrume("RAYPATH=. rcontrib -h -I -ab 1 -ad 64 -f reinhartb.cal -p MF=1 -bn Nrbins -b rbin "
+                                    "-m sky_glow scene.rad < rays.txt", c.dir);
+    ASSERT_EQ(o.status, 0) << o.err;
+    auto r = rows("\n\n" + o.out);
+    ASSERT_EQ(r.size(), 1u);
+    ASSERT_EQ(r[0].size(), 3u * 146);
+    EXPECT_NEAR(r[0][0], kPi, 1e-5);
+    EXPECT_NEAR(sumOfFirstComponents(r[0], 0, 146), kPi, 1e-5);
+}
+
+// Contributions past a modifier's last bin are left out with a warning, as in Radiance.
+TEST(RcontribCli, BinsPastTheLastAreLeftOutWithAWarning) {
+    Case c("past", openSky(), "0 0 0 0 0 1\n");
+    Output o = c.run("-h -I -ab 1 -ad 64 -b 'if(Dx,1,0)' -m sky_glow");
+    ASSERT_EQ(o.status, 0) << o.err;
+    EXPECT_NE(o.err.find("contributions fell past their modifier's last bin and were ignored"), std::string::npos) << o.err;
+    auto r = rows("\n\n" + o.out);
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_NEAR(r[0][0], kPi / 2, 0.1);  // the west half of the sky only
+}
+
 TEST(RcontribCli, SameRecordsOnAnyNumberOfThreads) {
     std::string rays;
     for (int i = 0; i < 40; ++i) rays += std::to_string(0.1 * i) + " 0 0 0 " + std::to_string(0.05 * i) + " 1\n";
@@ -178,6 +204,7 @@ TEST(RcontribCli, FilesPerModifierAndPerBin) {
 TEST(RcontribCli, BadInputIsNamedAndWritesNothing) {
     Case c("media", openSky() + "void mist fog 0 0 3 .1 .1 .1\nfog sphere cloud 0 0 4 0 0 0 1\n", "0 0 0 0 0 1\n");
     Case clear("bad", openSky(), "0 0 0 0 0 1\n1 2\n");
+    Case one("bad_one", openSky(), "0 0 0 0 0 1\n");
     struct Bad {
         const Case& where;
         std::string args, message;
@@ -194,6 +221,9 @@ TEST(RcontribCli, BadInputIsNamedAndWritesNothing) {
         {clear, "-I -m sky_glow -m sky_glow", "duplicate modifier 'sky_glow'"},
         {clear, "-I -o f_%s.txt -m sky_glow", "(stdin):2: 2 numbers, a ray needs 6"},
         {c, "-I -m sky_glow", "participating media (smoke, mist, -me) are not supported by rcontrib yet"},
+        {one, "-I -o 'x%' -m sky_glow", "-o x%: a '%' ends the pattern"},
+        {one, "-I -o '!cat' -m sky_glow", "-o !cat: commands as outputs are not supported"},
+        {one, "-I -c 2 -m sky_glow", "(stdin): input ends within a record (-c 2)"},
     };
     for (const Bad& b : cases) {
         Output o = b.where.run(b.args);
@@ -276,18 +306,26 @@ TEST(RfluxmtxCli, BadReceiversAreNamed) {
     struct Bad {
         std::string receivers, args, message;
     } cases[] = {
-        {"#@rfluxmtx h=kf\nvoid glow g 0 0 4 1 1 1 0\ng polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "- r.rad",
+        {"#@rfluxmtx h=kf\nvoid glow g 0 0 4 1 1 1 0\ng polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "- r.rad scene.rad",
          "hemisphere sampling h=kf is not supported yet"},
-        {"void glow g 0 0 4 1 1 1 0\ng polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "- r.rad", "missing hemisphere sampling type"},
-        {"#@rfluxmtx h=r\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 90\n", "- r.rad", "source 's' must be 180-degrees"},
-        {"#@rfluxmtx h=u w=1\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "- r.rad", "r.rad:1: bad parameter string"},
-        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng polygon p 0 0 7 0 0 0 1 0 0 0\n", "- r.rad", "r.rad:3: bad argument count"},
-        {"void glow g 0 0 4 1 1 1 0\n", "- r.rad", "r.rad: no receiver surfaces"},
-        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "sender.rad r.rad", "sender surfaces are not supported yet"},
+        {"void glow g 0 0 4 1 1 1 0\ng polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "- r.rad scene.rad", "missing hemisphere sampling type"},
+        {"#@rfluxmtx h=r\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 90\n", "- r.rad scene.rad", "source 's' must be 180-degrees"},
+        {"#@rfluxmtx h=u w=1\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "- r.rad scene.rad", "r.rad:1: bad parameter string"},
+        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng polygon p 0 0 7 0 0 0 1 0 0 0\n", "- r.rad scene.rad", "r.rad:3: bad argument count"},
+        {"void glow g 0 0 4 1 1 1 0\n", "- r.rad scene.rad", "r.rad: no receiver surfaces"},
+        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "sender.rad r.rad scene.rad", "sender surfaces are not supported yet"},
+        {"#@rfluxmtx h=u u=W\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "- r.rad scene.rad", "r.rad:1: bad up direction u=W"},
+        {"#@rfluxmtx h=u\n!cat other.rad\n", "- r.rad scene.rad", "r.rad:2: commands in receiver files are not supported"},
+        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng polygon p 0 0 9 0 0 0 1 0 0 zero 1 0\n", "- r.rad scene.rad",
+         "r.rad:3: bad real argument 'zero' of 'p'"},
+        {"", "- missing.rad scene.rad", "missing.rad: cannot open receiver file"},
+        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "- r.rad scene.rad -i", "-i: missing system octree"},
+        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "- r.rad -ab 2 scene.rad", "option -ab after the sender and receiver"},
+        {"#@rfluxmtx h=u\nvoid glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n", "-", "missing receiver file"},
     };
     for (const Bad& b : cases) {
         std::ofstream(c.dir / "r.rad") << b.receivers;
-        Output o = brume_test::runBrume("rfluxmtx -I " + b.args + " scene.rad < rays.txt", c.dir);
+        Output o = brume_test::runBrume("rfluxmtx -I " + b.args + " < rays.txt", c.dir);
         EXPECT_NE(o.status, 0) << b.receivers;
         EXPECT_NE(o.err.find(b.message), std::string::npos) << b.receivers << ": " << o.err;
         EXPECT_EQ(o.out, "");

@@ -23,16 +23,27 @@ std::string terminated(std::string text) {
     return text;
 }
 
+// A definition's text as read once for every modifier: an -e expression (Radiance's take a missing final ';'),
+// or an -f file's, which may knowingly redefine what rayinit.cal defines (loaded without warnings).
+struct LoadedDefinition {
+    FileText text;
+    bool file;
+};
+
+std::vector<LoadedDefinition> loaded(const std::vector<CalDefinition>& definitions) {
+    std::vector<LoadedDefinition> out;
+    for (const CalDefinition& d : definitions)
+        if (d.kind == CalDefinition::Kind::Expression) out.push_back({{"-e " + d.text, terminated(d.text)}, false});
+        else out.push_back({readLibraryFile(d.text, cal::embeddedCalFiles(), "function file"), true});
+    return out;
+}
+
 // The definitions every modifier's bins see, then its parameters ("a=1,b=2"), over Brume's rayinit.cal.
-void loadDefinitions(cal::Library& library, const std::vector<CalDefinition>& definitions,
+void loadDefinitions(cal::Library& library, const std::vector<LoadedDefinition>& definitions,
                      const std::string& parameters) {
-    for (const CalDefinition& d : definitions) {
-        if (d.kind == CalDefinition::Kind::Expression) {
-            library.loadText(terminated(d.text), "-e " + d.text);
-        } else {
-            FileText file = readLibraryFile(d.text, cal::embeddedCalFiles(), "function file");
-            library.redefine(file.text, file.origin);
-        }
+    for (const LoadedDefinition& d : definitions) {
+        if (d.file) library.redefine(d.text.text, d.text.origin);
+        else library.loadText(d.text.text, d.text.origin);
     }
     if (parameters.empty()) return;
     std::string text = parameters;
@@ -49,11 +60,13 @@ std::optional<double> number(const std::string& text) {
     return *end ? std::nullopt : std::optional<double>(v);
 }
 
-// Whether the definitions are Brume's own reinhartb.cal alone (not one found along RAYPATH).
-bool shippedReinhartOnly(const std::vector<CalDefinition>& definitions) {
-    return definitions.size() == 1 && definitions[0].kind == CalDefinition::Kind::File &&
-           definitions[0].text == "reinhartb.cal" &&
-           readLibraryFile("reinhartb.cal", cal::embeddedCalFiles(), "function file").origin == "reinhartb.cal";
+// Whether the definitions are Brume's own reinhartb.cal alone: by its text, as a file of that name in the
+// current directory or along RAYPATH may be another.
+bool shippedReinhartOnly(const std::vector<LoadedDefinition>& definitions) {
+    if (definitions.size() != 1 || !definitions[0].file) return false;
+    for (const EmbeddedFile& f : cal::embeddedCalFiles())
+        if (f.name == "reinhartb.cal") return definitions[0].text.text == f.text;
+    return false;
 }
 
 // rbin of Brume's reinhartb.cal with the parameters the program gives, natively; nothing with jitter or a
@@ -86,6 +99,7 @@ ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const 
                            const std::vector<ModifierRequest>& requests)
     : byObject_(scene.objects.size(), -1) {
     const auto named = modifiersByName(scene);
+    const std::vector<LoadedDefinition> texts = loaded(definitions);
     for (const ModifierRequest& r : requests) {
         if (r.name == "void") throw Error("cannot track 'void' modifier");
         auto objects = named.find(r.name);
@@ -104,12 +118,12 @@ ModifierBins::ModifierBins(const Scene& scene, const RenderScene& render, const 
             continue;
         }
         cal::Library library;
-        loadDefinitions(library, definitions, r.parameters);
+        loadDefinitions(library, texts, r.parameters);
         cal::Compiler compiler(library);
         cal::ExprId bin = compiler.expression(r.bin, {}, {"-b", 1});
         cal::ExprId count = compiler.expression(r.binCount, {}, {"-bn", 1});
         Tallied t{r.name, 1, columns_, std::move(compiler).finish(), bin, false, std::nullopt, r.output};
-        if (r.bin == "rbin" && shippedReinhartOnly(definitions)) t.reinhart = nativeReinhart(library);
+        if (r.bin == "rbin" && shippedReinhartOnly(texts)) t.reinhart = nativeReinhart(library);
         cal::Evaluator evaluator(t.program);
         evaluator.begin(cal::Channels{});
         double n = evaluator(count);
