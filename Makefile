@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 .PHONY: all deps programs test demo bench install clean
 
 # The programs, their OpenVDB module and the demo's flame maker: what the demo runs (not the test suite).
-PROGRAMS = rtrace rpict mkcache vwrays xform gensky gendaylit gendaymtx epw2wea rmtxop dctimestep daymetrics rcontrib rfluxmtx vismap fds2rad fds2vdb make_flame brume_openvdb
+PROGRAMS = rtrace rpict mkcache vwrays xform oconv gensky gendaylit gendaymtx epw2wea rmtxop dctimestep daymetrics rcontrib rfluxmtx vismap fds2rad fds2vdb make_flame brume_openvdb
 
 all: $(BUILD)/Makefile
 	cmake --build $(BUILD) -j $(JOBS)

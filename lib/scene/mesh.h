@@ -25,6 +25,9 @@ struct Mesh {
     // Vertex indices, counter-clockwise seen from the front (where the vertex normals point).
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<int> materials;  // per triangle: its material object in Scene::objects, -1 for void
+    // A compiled mesh's bounding cube (what oconv bounds mesh objects by); size 0 for Wavefront meshes.
+    glm::dvec3 cubeOrigin{0};
+    double cubeSize = 0;
 };
 
 // Reads a compiled Radiance mesh; its materials are appended to `scene`. Throws Error ("name: what") on a

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "scene/reader.h"
+#include "same_objects.h"
 #include "scratch_dir.h"
 
 namespace brume {
@@ -34,23 +35,6 @@ Scene readText() {
     return scene;
 }
 
-// Same objects; frozen octrees store reals with a 31-bit mantissa.
-void expectSameObjects(const Scene& actual, const Scene& expected) {
-    ASSERT_EQ(actual.objects.size(), expected.objects.size());
-    for (size_t i = 0; i < actual.objects.size(); ++i) {
-        const SceneObject &a = actual.objects[i], &e = expected.objects[i];
-        SCOPED_TRACE(e.name);
-        EXPECT_EQ(a.type, e.type);
-        EXPECT_EQ(a.name, e.name);
-        EXPECT_EQ(a.modifier, e.modifier);
-        EXPECT_EQ(a.strings, e.strings);
-        EXPECT_EQ(a.integers, e.integers);
-        ASSERT_EQ(a.reals.size(), e.reals.size());
-        for (size_t j = 0; j < a.reals.size(); ++j) EXPECT_NEAR(a.reals[j], e.reals[j], 1e-9 * std::abs(e.reals[j]));
-    }
-    EXPECT_EQ(actual.lastDefinition, expected.lastDefinition);
-}
-
 std::string octreeError(const std::string& bytes) {
     std::istringstream in(bytes);
     try {
@@ -70,7 +54,7 @@ std::string fileBytes(const std::string& path) {
 TEST(Octree, FrozenOctreeGivesTheSameObjectsAsItsText) {
     Scene scene;
     readOctreeFile(scene, kData + "/scene_frozen.oct");
-    expectSameObjects(scene, readText());
+    brume_test::expectSameObjects(scene, readText());
     EXPECT_EQ(scene.sources, (std::vector<std::string>{kData + "/scene_frozen.oct"}));
 }
 
@@ -95,7 +79,7 @@ TEST(Octree, NormalOctreeRereadsItsSceneFilesFromTheCurrentDirectory) {
     ScopedDirectory dir(kData);
     Scene scene;
     readOctreeFile(scene, "scene.oct");
-    expectSameObjects(scene, readText());
+    brume_test::expectSameObjects(scene, readText());
     EXPECT_EQ(scene.objects[0].where.str(), "scene.rad:3");
     EXPECT_EQ(scene.sources, (std::vector<std::string>{"scene.oct", "scene.rad"}));
 }

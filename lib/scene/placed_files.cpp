@@ -14,7 +14,7 @@ namespace {
 PlacedFile appendOctree(Scene& scene, const std::string& path) {
     Scene octree;
     readOctreeFile(octree, path);
-    PlacedFile file{path, int(scene.objects.size()), 0, nullptr};
+    PlacedFile file{path, int(scene.objects.size()), 0, nullptr, octree.cube.value_or(OctreeCube{})};
     for (SceneObject& o : octree.objects) {
         if (o.modifier >= 0) o.modifier += file.firstObject;
         scene.add(std::move(o));
@@ -27,7 +27,7 @@ PlacedFile appendOctree(Scene& scene, const std::string& path) {
 PlacedFile appendMesh(Scene& scene, const std::string& path, int user, bool resolveNames) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(SourceLocation{path}, "cannot open mesh file");
-    PlacedFile file{path, int(scene.objects.size()), 0, nullptr};
+    PlacedFile file{path, int(scene.objects.size()), 0, nullptr, {}};
     if (!isWavefrontName(path)) {
         file.mesh = std::make_shared<Mesh>(readRadianceMesh(scene, in, path));
     } else {

@@ -84,6 +84,8 @@ private:
         if (objectSize_ <= 0 || objectSize_ > kMaxObjectSize) input_.fail("incompatible mesh format");
         for (int i = 0; i < 3; ++i) header_.origin[i] = input_.textNumber("bounds");
         header_.size = input_.textNumber("bounds");
+        mesh_.cubeOrigin = header_.origin;
+        mesh_.cubeSize = header_.size;
         if (!(header_.size > 1e-6)) input_.fail("illegal octree bounds in mesh");
         if (glm::length(header_.origin) + header_.size > 1e18)
             input_.fail("mesh beyond ±1e18, where rays cannot be traced");

@@ -54,6 +54,7 @@ struct PlacedFile {
     std::string path;
     int firstObject = 0, endObject = 0;
     std::shared_ptr<const Mesh> mesh;  // a mesh's triangles; null for an octree
+    OctreeCube cube;                   // an octree's bounding cube (what oconv bounds its instances by)
 };
 
 struct Scene {

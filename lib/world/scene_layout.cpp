@@ -26,13 +26,6 @@ void addSurfaces(const Scene& scene, int begin, int end, bool prototype, std::ve
     }
 }
 
-// The transform of an instance or mesh object: its arguments after the file name, all of them.
-Transform objectTransform(const SceneObject& o) {
-    std::span<const std::string> args(o.strings.begin() + 1, o.strings.end());
-    ParsedTransform parsed = parseTransform(args);
-    if (parsed.used != args.size()) throw Error(o.where, "bad transform for " + o.type + " \"" + o.name + "\"");
-    return parsed.transform;
-}
 
 // Places the instances and meshes among objects [begin, end), and those inside them, under `outer` (the
 // transform, modifier object and pattern transform of the path so far).
@@ -96,6 +89,13 @@ SceneLayout layoutScene(const Scene& scene) {
     }
     Placer(scene, layout).place(0, int(scene.ownObjects()), Placement{-1, {}, {}, -1, -1, {}});
     return layout;
+}
+
+Transform objectTransform(const SceneObject& o) {
+    std::span<const std::string> args(o.strings.begin() + 1, o.strings.end());
+    ParsedTransform parsed = parseTransform(args);
+    if (parsed.used != args.size()) throw Error(o.where, "bad transform for " + o.type + " \"" + o.name + "\"");
+    return parsed.transform;
 }
 
 }  // namespace brume

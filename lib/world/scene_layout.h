@@ -43,4 +43,8 @@ struct SceneLayout {
 // dropped, except in prototypes (see Surface::voidModifier).
 SceneLayout layoutScene(const Scene& scene);
 
+// The transform of an instance or mesh object (its arguments after the file name, all of them). Throws
+// Error (file:line) when they are not a transform.
+Transform objectTransform(const SceneObject& o);
+
 }  // namespace brume
