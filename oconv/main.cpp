@@ -16,8 +16,6 @@ namespace {
 
 const char* const kUsage = "usage: oconv [-f][-w][-r maxres][-n objlim][-b xmin ymin zmin size] file.rad .. > file.oct\n";
 
-constexpr double kMargin = 1e-5;  // Radiance's OMARGIN, added around a cube given with -b
-
 struct Command {
     bool frozen = false, quiet = false;
     OctreeBuildOptions build;
@@ -55,9 +53,9 @@ Command parse(const std::vector<std::string>& args) {
             c.build.objectLimit = size_t(positive(number(args, ++i, a), a));
         } else if (a == "-b") {
             OctreeCube cube;
-            for (double& x : cube.origin) x = number(args, ++i, a) - kMargin;
-            cube.size = number(args, ++i, a) + 2 * kMargin;
-            if (!(cube.size > 2 * kMargin)) throw UsageError("-b needs a positive size", kUsage);
+            for (double& x : cube.origin) x = number(args, ++i, a) - kOctreeMargin;
+            cube.size = number(args, ++i, a) + 2 * kOctreeMargin;
+            if (!(cube.size > 2 * kOctreeMargin)) throw UsageError("-b needs a positive size", kUsage);
             c.build.cube = cube;
         } else if (a == "-i") {
             throw UsageError("-i (adding to an octree) is not supported yet; give all the scene files at once", kUsage);

@@ -1,6 +1,6 @@
 // Facts from Radiance's oconv.c and bbox.c: the scene's bounds are those of its surfaces' vertices, spheres'
 // axis extremes, cones' and rings' end circles, and the 8 transformed corners of each instance's octree
-// cube, widened by OMARGIN (10 × FTINY = 1e-5) on each side; the cube has the largest extent as its size and
+// cube and each mesh's cube, widened by OMARGIN (10 × FTINY = 1e-5) on each side; the cube has the largest extent as its size and
 // is centred on the bounds; cubes smaller than size / resolution − FTINY are not divided. A cube divides when
 // it would list more than the limit of objects, volumes (instances, meshes) that contain it not counted;
 // children whose lists are all the same merge back into one leaf. Which objects meet a cube is decided
@@ -23,8 +23,7 @@ namespace brume {
 
 namespace {
 
-constexpr double kFtiny = 1e-6;          // Radiance's FTINY
-constexpr double kMargin = 10 * kFtiny;  // Radiance's OMARGIN around the scene's bounds
+constexpr double kFtiny = 1e-6;  // Radiance's FTINY
 
 enum class Contact { Miss, Hit, Inside };
 
@@ -147,7 +146,7 @@ void includeCircle(Bounds3& b, const dvec3& center, const dvec3& axis, double r)
 OctreeCube cubeAround(Bounds3 b) {
     OctreeCube cube;
     if (b.empty()) return cube;
-    b.lo -= kMargin, b.hi += kMargin;
+    b.lo -= kOctreeMargin, b.hi += kOctreeMargin;
     cube.size = largest(b.hi - b.lo);
     for (int a = 0; a < 3; ++a) cube.origin[a] = (b.hi[a] + b.lo[a] - cube.size) * .5;
     return cube;

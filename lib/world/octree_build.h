@@ -11,6 +11,9 @@
 
 namespace brume {
 
+// Radiance's OMARGIN: what oconv widens the scene's bounds by on each side (and a cube given with -b).
+constexpr double kOctreeMargin = 1e-5;
+
 struct OctreeBuildOptions {
     size_t objectLimit = 6;  // oconv -n: a cube holding more is divided...
     int resolution = 16384;  // oconv -r: ...unless its children would be smaller than the cube's size / this
