@@ -276,6 +276,16 @@ def table(case, radiance, brume):
     return lines + [""]
 
 
+def frontier(rows):
+    """The rungs no cheaper rung beats, (CPU s, RMS error) in order of time: a program's time against its error."""
+    points, best = [], float("inf")
+    for r in sorted(rows, key=lambda r: r["cpu"]):
+        if r["rms"] < best:
+            points.append((r["cpu"], r["rms"] / 100))
+            best = r["rms"]
+    return points
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--radiance", help="run Radiance's ladders again with its programs in this directory")
@@ -299,7 +309,7 @@ def main():
     for case in cases:
         lines += table(case, radiance[case.name], brume[case.name])
         for who, rows in (("Radiance", radiance[case.name]), ("Brume", brume[case.name])):
-            series["%s, %s" % (case.label(), who)] = [(r["cpu"], r["rms"] / 100) for r in sorted(rows, key=lambda r: r["cpu"])]
+            series["%s, %s" % (case.label(), who)] = frontier(rows)
     plotted = bench.ladders_plot(series, PLOT, "Annual illuminance: CPU time against RMS error", ", ", "Brume")
     bench.write_result("\n".join(lines), os.path.basename(TABLE), plotted, os.path.basename(PLOT))
 
