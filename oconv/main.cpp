@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "scene/octree.h"
 #include "scene/placed_files.h"
 #include "scene/reader.h"
 #include "util/error.h"
@@ -14,11 +15,13 @@ using namespace brume;
 
 namespace {
 
-const char* const kUsage = "usage: oconv [-f][-w][-r maxres][-n objlim][-b xmin ymin zmin size] file.rad .. > file.oct\n";
+const char* const kUsage =
+    "usage: oconv [-f][-w][-r maxres][-n objlim][-b xmin ymin zmin size | -i octree] file.rad .. > file.oct\n";
 
 struct Command {
     bool frozen = false, quiet = false;
     OctreeBuildOptions build;
+    std::string base;                // -i: the octree added to
     std::vector<std::string> files;  // "-" is the standard input
 };
 
@@ -58,20 +61,42 @@ Command parse(const std::vector<std::string>& args) {
             if (!(cube.size > 2 * kOctreeMargin)) throw UsageError("-b needs a positive size", kUsage);
             c.build.cube = cube;
         } else if (a == "-i") {
-            throw UsageError("-i (adding to an octree) is not supported yet; give all the scene files at once", kUsage);
+            if (++i >= args.size()) throw UsageError("missing value for -i", kUsage);
+            c.base = args[i];
         } else {
             throw UsageError("unknown option: '" + a + "'", kUsage);
         }
     }
     c.files.assign(args.begin() + long(i), args.end());
-    if (c.files.empty()) throw UsageError("no scene files", kUsage);
+    if (c.files.empty() && c.base.empty()) throw UsageError("no scene files", kUsage);
+    if (!c.base.empty() && c.build.cube) throw UsageError("only one of '-b' or '-i'", kUsage);
     return c;
+}
+
+// The octree -i adds to, as Radiance's oconv takes it: its objects (a normal octree's files read again), its
+// cube (the new objects must fit in it), its header (copied before this command's line) and its files (listed
+// first, unless it is frozen: then so is the new one).
+struct Base {
+    std::vector<std::string> headerLines{"#?RADIANCE"}, files;
+    bool frozen = false;
+};
+
+Base readBase(const Command& command, Scene& scene, OctreeBuildOptions& build) {
+    Base base;
+    if (command.base.empty()) return base;
+    readOctreeFile(scene, command.base, &base.files);
+    base.headerLines = scene.headerLines;
+    build.cube = scene.cube;
+    base.frozen = base.files.empty();
+    if (base.frozen && !command.frozen && !command.quiet) warn(command.base + ": frozen octree: so is the new one");
+    return base;
 }
 
 int run(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
     Command command = parse(args);
     Scene scene;
+    Base base = readBase(command, scene, command.build);
     for (const std::string& file : command.files) readSceneFile(scene, file);
     size_t count = scene.objects.size();
     loadPlacedFiles(scene);
@@ -82,8 +107,12 @@ int run(int argc, char** argv) {
              "\"); Radiance's programs will miss them there (raise -r)");
     bool fromInput = false;
     for (const std::string& file : command.files) fromInput = fromInput || file == "-";
-    OctreeContents octree{{"#?RADIANCE", commandLine(args)}, built.cube, {}, &scene, count, std::move(built.nodes)};
-    if (!command.frozen && !fromInput) octree.files = command.files;
+    base.headerLines.push_back(commandLine(args));
+    OctreeContents octree{base.headerLines, built.cube, {}, &scene, count, std::move(built.nodes)};
+    if (!command.frozen && !fromInput && !base.frozen) {
+        octree.files = base.files;
+        octree.files.insert(octree.files.end(), command.files.begin(), command.files.end());
+    }
     // Written whole once made, so that an error leaves no half octree behind.
     std::ostringstream bytes;
     writeOctree(bytes, octree);

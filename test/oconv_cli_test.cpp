@@ -64,11 +64,35 @@ TEST(OconvCli, TheStandardInputMakesAFrozenOctree) {
     EXPECT_EQ(brume_test::slurp(dir / "in.txt"), brume_test::slurp(dir / "radiance.txt"));
 }
 
+// -i adds to an octree as Radiance's oconv does: its cube kept, its header copied before the new command line,
+// its files listed first (a frozen one makes a frozen one, with a warning). The new objects lie inside the room,
+// so the octree of all the files at once has the same cube, and rtrace the same bytes through both.
+TEST(OconvCli, AddingToAnOctreeGivesTheOctreeOfAllItsFiles) {
+    fs::path dir = sceneCase("add");
+    std::ofstream(dir / "more.rad") << "grey sphere more 0 0 4 3 2 .3 .25\nlum sphere lamp2 0 0 4 1 1 2.5 .1\n";
+    Output o = brume_test::runBrume("oconv room.rad > base.oct && oconv -i base.oct more.rad > added.oct && "
+                                    "oconv room.rad more.rad > all.oct && oconv -i radiance.oct more.rad > frozen_added.oct && "
+                                    "oconv -f room.rad more.rad > frozen_all.oct && for o in added all frozen_added frozen_all; do " +
+                                        std::string(kTrace) + "$o.oct < rays.txt > $o.txt || exit; done",
+                                    dir);
+    ASSERT_EQ(o.status, 0) << o.err;
+    EXPECT_EQ(o.err, "oconv: warning - radiance.oct: frozen octree: so is the new one\n");
+    EXPECT_EQ(brume_test::slurp(dir / "added.txt"), brume_test::slurp(dir / "all.txt"));
+    EXPECT_EQ(brume_test::slurp(dir / "frozen_added.txt"), brume_test::slurp(dir / "frozen_all.txt"));
+    EXPECT_NE(brume_test::slurp(dir / "added.txt").find_first_of("123456789"), std::string::npos);  // lit
+    std::string added = brume_test::slurp(dir / "added.oct");
+    EXPECT_NE(added.find("\noconv room.rad\n"), std::string::npos);
+    EXPECT_NE(added.find(" -i base.oct more.rad\nFORMAT=Radiance_octree\n"), std::string::npos);
+    EXPECT_NE(added.find(std::string("room.rad\0more.rad\0\0", 19)), std::string::npos);
+    EXPECT_EQ(brume_test::slurp(dir / "frozen_added.oct").find(std::string("room.rad\0", 9)), std::string::npos);
+}
+
 // Errors name the program, the file and line; nothing reaches the standard output.
 TEST(OconvCli, BadInputIsRefusedWithNothingWritten) {
     fs::path dir = sceneCase("errors");
     std::ofstream(dir / "bad.rad") << "void plastic m 0 0 5 .5 .5 .5 0 0\nm sphere s 0 0 3 1 2 3\n";
     std::ofstream(dir / "ball.rad") << "void plastic m 0 0 5 .5 .5 .5 0 0\nm sphere s 0 0 4 1 2 3 .5\n";
+    std::ofstream(dir / "far.rad") << "grey sphere far 0 0 4 9 9 9 .5\n";
     struct Case {
         std::string line, error;
     } cases[] = {
@@ -76,7 +100,9 @@ TEST(OconvCli, BadInputIsRefusedWithNothingWritten) {
         {"oconv", "oconv: no scene files\nusage: oconv"},
         {"oconv -r 0 room.rad", "oconv: -r needs a positive integer"},
         {"oconv -n", "oconv: missing value for -n"},
-        {"oconv -i old.oct room.rad", "oconv: -i (adding to an octree) is not supported yet"},
+        {"oconv -i old.oct room.rad", "oconv: old.oct: cannot open octree file"},
+        {"oconv -b 0 0 0 4 -i radiance.oct ball.rad", "oconv: only one of '-b' or '-i'"},
+        {"oconv -f -i radiance.oct far.rad", "oconv: far.rad:1: boundary does not encompass scene (sphere \"far\" is outside it)"},
         {"oconv missing.rad", "oconv: missing.rad: cannot"},
         {"oconv room.rad bad.rad", "oconv: bad.rad:2: bad arguments for sphere \"s\""},
         {"oconv - < bad.rad", "oconv: standard input:2: bad arguments for sphere \"s\""},

@@ -53,7 +53,8 @@ bool isOctree(std::istream& in) {
     return octree;
 }
 
-void readOctree(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options) {
+void readOctree(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options,
+                std::vector<std::string>* listed) {
     BinaryInput input(in, name, "octree");
     auto header = readInfoHeader(in, SIZE_MAX);
     if (!header) input.fail("not an octree (no information header)");
@@ -74,15 +75,16 @@ void readOctree(Scene& scene, std::istream& in, const std::string& name, const R
     for (std::string file; !(file = input.string()).empty();) files.push_back(std::move(file));
     size_t count = input.count(static_cast<int>(objectSize));
     scene.sources.push_back(name);
+    if (listed) *listed = files;
     if (!files.empty()) return readListedFiles(scene, files, count, input, options);
     skipOctreeNodes(input, static_cast<int>(objectSize));
     if (readFrozenObjects(scene, input, static_cast<int>(objectSize)) != count) input.fail("bad object count");
 }
 
-void readOctreeFile(Scene& scene, const std::string& path) {
+void readOctreeFile(Scene& scene, const std::string& path, std::vector<std::string>* listed) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(SourceLocation{path}, "cannot open octree file");
-    readOctree(scene, in, path);
+    readOctree(scene, in, path, {}, listed);
 }
 
 }  // namespace brume

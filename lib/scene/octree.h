@@ -4,6 +4,7 @@
 #pragma once
 #include <istream>
 #include <string>
+#include <vector>
 
 #include "scene/reader.h"
 #include "scene/scene.h"
@@ -16,8 +17,9 @@ bool isOctree(std::istream& in);
 // Appends an octree's objects to `scene` and sets its headerLines and cube; `name` is used in messages.
 // The scene files a normal octree lists are opened as rtrace does: relative to the current directory
 // (not the octree's), names starting with '!' being commands if `options` allow them (its
-// searchRayPath is ignored).
-void readOctree(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options = {});
-void readOctreeFile(Scene& scene, const std::string& path);
+// searchRayPath is ignored). `listed`, when given, receives the names of those files (none if frozen).
+void readOctree(Scene& scene, std::istream& in, const std::string& name, const ReadOptions& options = {},
+                std::vector<std::string>* listed = nullptr);
+void readOctreeFile(Scene& scene, const std::string& path, std::vector<std::string>* listed = nullptr);
 
 }  // namespace brume
