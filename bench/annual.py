@@ -16,7 +16,8 @@ and the worst sensor's DA (points). Radiance's runs are kept in bench/results/an
 annual_brume.json (the table shows every case run so far); --radiance DIR runs Radiance's again with its programs
 in DIR. Brume's ladders run the same command lines with Brume's programs
 (build/bin) and -n 1 (one thread), each rung twice with different seeds (the RMS of the two, and their CPU
-mean); the goal is 2 % in a tenth of Radiance's cheapest rung within 2 %.
+mean); with --radiance the two programs' rungs alternate, so that the machine's drift in speed falls on both. The
+goal is 2 % in a tenth of Radiance's cheapest rung within 2 %.
 
     python3 bench/annual.py [--radiance /tmp/radiance/inst/bin] [--cases office,office_m2,deepplan]
     python3 bench/annual.py --reference CASE --radiance DIR     # a case's converged reference, one run
@@ -152,29 +153,45 @@ def coefficients(case, threads):
     return "rfluxmtx %s -I+ -y %d %%s - sky.rad -i model.oct < '%s/%s' > dc.mtx" % (threads, case.sensors, MODEL, case.grid)
 
 
-def run_ladder(case, ladder, line, tmp, env, tries):
-    """Each rung's coefficients `tries` times (the RMS of their errors, their mean CPU), plus the faster timestep."""
+def ladder(case, rungs, line, env, tries):
+    """A program's ladder on a case, a rung at a time (a generator, so that two programs' rungs can alternate): each
+    rung's coefficients `tries` times (the RMS of their errors, their mean CPU), plus the faster timestep."""
     ref, metrics = reference(case), reference_metrics(case)
-    runs, steps = [], None
-    for options in ladder:
-        results = []
-        for _ in range(tries):
-            t = timed(tmp, env, line % " ".join(options))
-            if steps is None:
-                steps = timestep(tmp, env)
-            else:
-                timed(tmp, env, TIMESTEPS[steps[0]])
-            results.append((t.cpu, judged(os.path.join(tmp, "ill.mtx"), ref, metrics)))
-        n = len(results)
-        mean = lambda key: sum(e[key] for _, e in results) / n
-        runs.append({"options": " ".join(options), "coefficients_cpu": sum(c for c, _ in results) / n,
-                     "timestep": steps[0], "timestep_cpu": steps[1][steps[0]], "timesteps": steps[1],
-                     "rms": math.sqrt(sum(e["rms"] ** 2 for _, e in results) / n), "bias": mean("bias"),
-                     "worst": max((e["worst"] for _, e in results), key=abs), "sda": mean("sda"),
-                     "da_worst": max((e["da_worst"] for _, e in results), key=abs)})
-        runs[-1]["cpu"] = runs[-1]["coefficients_cpu"] + runs[-1]["timestep_cpu"]
-        print("  %-10s %-28s %6.1f CPU s  RMS %.2f %%  sDA %+.2f" % (case.name, runs[-1]["options"], runs[-1]["cpu"],
-                                                                    runs[-1]["rms"], runs[-1]["sda"]), file=sys.stderr)
+    steps = None
+    with tempfile.TemporaryDirectory() as tmp:
+        prepare(case, tmp, env)
+        for options in rungs:
+            results = []
+            for _ in range(tries):
+                t = timed(tmp, env, line % " ".join(options))
+                if steps is None:
+                    steps = timestep(tmp, env)
+                else:
+                    timed(tmp, env, TIMESTEPS[steps[0]])
+                results.append((t.cpu, judged(os.path.join(tmp, "ill.mtx"), ref, metrics)))
+            n = len(results)
+            mean = lambda key: sum(e[key] for _, e in results) / n
+            run = {"options": " ".join(options), "coefficients_cpu": sum(c for c, _ in results) / n,
+                   "timestep": steps[0], "timestep_cpu": steps[1][steps[0]], "timesteps": steps[1],
+                   "rms": math.sqrt(sum(e["rms"] ** 2 for _, e in results) / n), "bias": mean("bias"),
+                   "worst": max((e["worst"] for _, e in results), key=abs), "sda": mean("sda"),
+                   "da_worst": max((e["da_worst"] for _, e in results), key=abs)}
+            run["cpu"] = run["coefficients_cpu"] + run["timestep_cpu"]
+            print("  %-10s %-28s %6.1f CPU s  RMS %.2f %%  sDA %+.2f" % (case.name, run["options"], run["cpu"],
+                                                                        run["rms"], run["sda"]), file=sys.stderr)
+            yield run
+
+
+def alternating(ladders):
+    """Every ladder's rungs, one of each in turn, so that the machine's drift in speed falls on all of them."""
+    runs = [[] for _ in ladders]
+    pending = list(enumerate(ladders))
+    while pending:
+        for entry in list(pending):
+            try:
+                runs[entry[0]].append(next(entry[1]))
+            except StopIteration:
+                pending.remove(entry)
     return runs
 
 
@@ -206,23 +223,20 @@ def kept(path, runs):
     return cases
 
 
-def run_radiance(bindir, cases):
-    env, runs = radiance_env(bindir), {}
-    for case in cases:
-        with tempfile.TemporaryDirectory() as tmp:
-            prepare(case, tmp, env)
-            runs[case.name] = run_ladder(case, case.ladder, coefficients(case, ""), tmp, env, 1)
-    return kept(RUNS, runs)
-
-
-def run_brume(case):
-    """A case's ladder with rfluxmtx and rmtxop from build/bin, one thread, two seeds a rung."""
+def brume_env():
     bindir = os.path.join(bench.ROOT, "build", "bin")
     env = dict(os.environ, PATH=bindir + ":" + os.environ["PATH"])
     env.pop("RAYPATH", None)
-    with tempfile.TemporaryDirectory() as tmp:
-        prepare(case, tmp, env)
-        return run_ladder(case, case.brume_ladder, coefficients(case, "-n 1"), tmp, env, 2)
+    return env
+
+
+def run_case(case, radiance_bin):
+    """Brume's ladder on a case (rfluxmtx and rmtxop from build/bin, one thread, two seeds a rung) and, given its
+    programs, Radiance's (one run a rung), their rungs alternating."""
+    ladders = [ladder(case, case.brume_ladder, coefficients(case, "-n 1"), brume_env(), 2)]
+    if radiance_bin:
+        ladders.append(ladder(case, case.ladder, coefficients(case, ""), radiance_env(radiance_bin), 1))
+    return alternating(ladders)
 
 
 def make_reference(case, bindir):
@@ -298,8 +312,9 @@ def main():
             sys.exit("bench: --reference needs --radiance DIR")
         return make_reference(by_name[args.reference], args.radiance)
     cases = [by_name[n] for n in args.cases.split(",")]
-    brume = kept(BRUME_RUNS, {c.name: run_brume(c) for c in cases})
-    radiance = run_radiance(args.radiance, cases) if args.radiance else kept(RUNS, {})
+    runs = {c.name: run_case(c, args.radiance) for c in cases}
+    brume = kept(BRUME_RUNS, {name: r[0] for name, r in runs.items()})
+    radiance = kept(RUNS, {name: r[1] for name, r in runs.items() if len(r) > 1})
     cases = [c for c in CASES if c.name in brume and c.name in radiance]  # the table: every case run so far
     lines = ["# Annual daylight: time to a year of illuminances (bench/annual.py)", "",
              "Chicago TMY3, one process; errors of each sensor's annual mean illuminance against the case's reference,",
