@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "scene_text.h"
+#include "scoped_directory.h"
 
 using namespace brume;
 using namespace brume::test;
@@ -189,15 +190,15 @@ TEST(Instance, OctreeHoldingItselfIsAnError) {
     std::filesystem::create_directories(dir);
     std::ofstream(dir / "self.oct", std::ios::binary) << octree;
     std::ofstream(dir / "self.rad") << "void instance me 1 self.oct\n0\n0\n";
-    auto cwd = std::filesystem::current_path();
-    std::filesystem::current_path(dir);
     std::string error = "no error";
-    try {
-        TestScene t("void instance outer 1 self.oct\n0\n0\n");
-    } catch (const Error& e) {
-        error = e.what();
+    {
+        brume_test::ScopedDirectory here(dir);
+        try {
+            TestScene t("void instance outer 1 self.oct\n0\n0\n");
+        } catch (const Error& e) {
+            error = e.what();
+        }
     }
-    std::filesystem::current_path(cwd);
     std::filesystem::remove_all(dir);
     EXPECT_EQ(error, "self.rad:1: instance \"me\" holds itself (self.oct)");
 }

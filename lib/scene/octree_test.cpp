@@ -9,6 +9,7 @@
 
 #include "scene/reader.h"
 #include "same_objects.h"
+#include "scoped_directory.h"
 #include "scratch_dir.h"
 
 namespace brume {
@@ -18,16 +19,7 @@ namespace fs = std::filesystem;
 
 const std::string kData = std::string(BRUME_TEST_DATA) + "/scene";
 
-// Runs the test body in another directory: normal octrees name their scene files relative to the
-// directory oconv ran in, and rtrace opens them relative to its own.
-class ScopedDirectory {
-public:
-    explicit ScopedDirectory(const fs::path& dir) : old_(fs::current_path()) { fs::current_path(dir); }
-    ~ScopedDirectory() { fs::current_path(old_); }
-
-private:
-    fs::path old_;
-};
+using brume_test::ScopedDirectory;
 
 Scene readText() {
     Scene scene;

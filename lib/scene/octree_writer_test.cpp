@@ -10,6 +10,7 @@
 #include "scene/octree.h"
 #include "scene/reader.h"
 #include "same_objects.h"
+#include "scoped_directory.h"
 
 using namespace brume;
 
@@ -21,12 +22,7 @@ const fs::path kData = fs::path(BRUME_TEST_DATA) / "scene";
 
 // Runs a test in the directory of the scene files: normal octrees name them relative to it.
 class InDataDirectory : public ::testing::Test {
-protected:
-    void SetUp() override { fs::current_path(kData); }
-    void TearDown() override { fs::current_path(previous_); }
-
-private:
-    fs::path previous_ = fs::current_path();
+    brume_test::ScopedDirectory here_{kData};
 };
 
 Scene textScene() {

@@ -12,6 +12,7 @@
 
 #include "scene/raypath.h"
 #include "scene_text.h"
+#include "scoped_directory.h"
 
 namespace brume {
 namespace {
@@ -340,8 +341,7 @@ TEST(RayPath, DirectoriesAreSearchedInOrder) {
 }
 
 TEST(RayPath, EmptyOrDotDirectoryIsTheCurrentOne) {
-    std::filesystem::path old = std::filesystem::current_path();
-    std::filesystem::current_path(kData);
+    brume_test::ScopedDirectory here(kData);
     {
         ScopedRayPath path("/nonexistent:.");
         EXPECT_EQ(findOnRayPath("scene.rad"), "scene.rad");
@@ -350,7 +350,6 @@ TEST(RayPath, EmptyOrDotDirectoryIsTheCurrentOne) {
         ScopedRayPath path(nullptr);  // default ".:/usr/local/lib/ray"
         EXPECT_EQ(findOnRayPath("scene.rad"), "scene.rad");
     }
-    std::filesystem::current_path(old);
 }
 
 }  // namespace

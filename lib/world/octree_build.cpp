@@ -12,6 +12,7 @@
 #include "world/octree_build.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <variant>
 
@@ -43,6 +44,8 @@ struct Element {
 };
 
 double largest(const dvec3& v) { return std::max({v.x, v.y, v.z}); }
+
+dvec3 originOf(const OctreeCube& cube) { return {cube.origin[0], cube.origin[1], cube.origin[2]}; }
 
 bool overlaps(const Bounds3& b, const Box& box) {
     for (int a = 0; a < 3; ++a)
@@ -169,7 +172,7 @@ Element volume(const Scene& scene, int index) {
     OctreeCube cube = fileCube(scene.placedFiles.at(scene.placedFileOf.at(index)));
     Transform t = objectTransform(scene.objects[index]);
     for (int corner = 0; corner < 8; ++corner) {
-        dvec3 p(cube.origin[0], cube.origin[1], cube.origin[2]);
+        dvec3 p = originOf(cube);
         for (int a = 0; a < 3; ++a)
             if (corner & (1 << a)) p[a] += cube.size;
         e.bounds.include(t.point(p));
@@ -229,6 +232,12 @@ OctreeCube cubeAround(const std::vector<Element>& elements) {
     return cubeAround(b);
 }
 
+// The elements that meet a cube, and how many of them count toward dividing it (those not containing it).
+struct Meeting {
+    std::vector<int> met;
+    size_t counted = 0;
+};
+
 class Builder {
 public:
     Builder(const std::vector<Element>& elements, const OctreeBuildOptions& options, double rootSize)
@@ -237,22 +246,33 @@ public:
           minSize_(rootSize / options.resolution - kFtiny),
           slack_(1e-7 * rootSize) {}
 
-    // Appends the nodes of the cube at `origin` of `size`, given the elements that may meet it.
-    void build(const dvec3& origin, double size, const std::vector<int>& candidates) {
+    // The elements among `candidates` that meet the cube at `origin` of `size`.
+    Meeting meeting(const dvec3& origin, double size, const std::vector<int>& candidates) const {
         Box box{origin + size / 2, dvec3(size / 2 + slack_)};
-        std::vector<int> met;
-        size_t counted = 0;
+        Meeting m;
         for (int c : candidates) {
             Contact k = contact(elements_[c], box);
             if (k == Contact::Miss) continue;
-            met.push_back(c);
-            counted += k == Contact::Hit;
+            m.met.push_back(c);
+            m.counted += k == Contact::Hit;
         }
+        return m;
+    }
+
+    // Appends the nodes of the cube at `origin` of `size`, which the elements of `here` meet.
+    void build(const dvec3& origin, double size, const Meeting& here) {
         double half = size / 2;
-        if (counted <= limit_ || half < minSize_ || !dividing(origin, half, met)) return leaf(met);
+        if (here.counted <= limit_ || half < minSize_) return leaf(here.met);
+        std::array<Meeting, 8> children;
+        bool gains = false;  // dividing gains nothing unless some child meets fewer
+        for (int child = 0; child < 8; ++child) {
+            children[child] = meeting(childOrigin(origin, half, child), half, here.met);
+            gains = gains || children[child].met.size() < here.met.size();
+        }
+        if (!gains) return leaf(here.met);
         size_t at = built.nodes.size();
         built.nodes.push_back({true, {}});
-        for (int child = 0; child < 8; ++child) build(childOrigin(origin, half, child), half, met);
+        for (int child = 0; child < 8; ++child) build(childOrigin(origin, half, child), half, children[child]);
         mergeAlike(at);
     }
 
@@ -263,17 +283,6 @@ private:
         for (int a = 0; a < 3; ++a)
             if (child & (1 << a)) origin[a] += half;
         return origin;
-    }
-
-    // Whether dividing the cube gains anything: some child meets fewer of `met`.
-    bool dividing(const dvec3& origin, double half, const std::vector<int>& met) const {
-        for (int child = 0; child < 8; ++child) {
-            dvec3 o = childOrigin(origin, half, child);
-            Box box{o + half / 2, dvec3(half / 2 + slack_)};
-            for (int m : met)
-                if (contact(elements_[m], box) == Contact::Miss) return true;
-        }
-        return false;
     }
 
     void leaf(const std::vector<int>& met) {
@@ -302,8 +311,7 @@ private:
 };
 
 void requireWithin(const OctreeCube& cube, const std::vector<Element>& elements, const Scene& scene) {
-    dvec3 lo(cube.origin[0], cube.origin[1], cube.origin[2]);
-    Bounds3 box{lo, lo + cube.size};
+    Bounds3 box{originOf(cube), originOf(cube) + cube.size};
     for (const Element& e : elements)
         if (!box.contains(e.bounds.lo) || !box.contains(e.bounds.hi))
             throw Error(scene.objects[e.object].where, "boundary does not encompass scene (" +
@@ -320,7 +328,7 @@ BuiltOctree buildOctree(const Scene& scene, size_t count, const OctreeBuildOptio
     std::vector<int> all(elements.size());
     for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
     Builder builder(elements, options, cube.size);
-    builder.build(dvec3(cube.origin[0], cube.origin[1], cube.origin[2]), cube.size, all);
+    builder.build(originOf(cube), cube.size, builder.meeting(originOf(cube), cube.size, all));
     builder.built.cube = cube;
     return std::move(builder.built);
 }

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "scene/octree.h"
 #include "scene/placed_files.h"
 #include "scene/reader.h"
+#include "scoped_directory.h"
 #include "world/scene_surfaces.h"
 
 using namespace brume;
@@ -181,8 +181,7 @@ std::string cubeText(const OctreeCube& c) {
 // placed.oct from placed.rad (an instance of it and compiled meshes, rotated and scaled).
 TEST(OctreeBuild, TheCubeIsRadiancesOconvs) {
     // Instances name their files relative to the current directory, as oconv ran there.
-    std::filesystem::path previous = std::filesystem::current_path();
-    std::filesystem::current_path(kData + "/scene");
+    brume_test::ScopedDirectory here(kData + "/scene");
     for (const std::string name : {"scene", "placed"}) {
         SCOPED_TRACE(name);
         Scene text;
@@ -193,7 +192,6 @@ TEST(OctreeBuild, TheCubeIsRadiancesOconvs) {
         readOctreeFile(radiance, name + (name == "scene" ? "_frozen" : "") + ".oct");
         EXPECT_EQ(cubeText(buildOctree(text, count).cube), cubeText(*radiance.cube));
     }
-    std::filesystem::current_path(previous);
 }
 
 // A torus of 32 cones (what Radiance's genrev makes): their boxes overlap everywhere along the ring, but
