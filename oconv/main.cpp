@@ -102,9 +102,9 @@ int run(int argc, char** argv) {
     loadPlacedFiles(scene);
     BuiltOctree built = buildOctree(scene, count, command.build);
     if (built.overflowObject >= 0 && !command.quiet)
-        warn("set overflow: more than 511 objects meet one cube at the resolution limit (first left out: " +
+        warn("set overflow: more than 511 objects meet one cube that is divided no further (first left out: " +
              scene.objects[built.overflowObject].type + " \"" + scene.objects[built.overflowObject].name +
-             "\"); Radiance's programs will miss them there (raise -r)");
+             "\"); Radiance's programs will miss them there");
     bool fromInput = false;
     for (const std::string& file : command.files) fromInput = fromInput || file == "-";
     base.headerLines.push_back(commandLine(args));

@@ -100,6 +100,9 @@ TEST(OconvCli, BadInputIsRefusedWithNothingWritten) {
         {"oconv", "oconv: no scene files\nusage: oconv"},
         {"oconv -r 0 room.rad", "oconv: -r needs a positive integer"},
         {"oconv -n", "oconv: missing value for -n"},
+        {"oconv -r x room.rad", "oconv: bad value for -r: 'x'"},
+        {"oconv -i", "oconv: missing value for -i"},
+        {"oconv -b 0 0 0 -1 room.rad", "oconv: -b needs a positive size"},
         {"oconv -i old.oct room.rad", "oconv: old.oct: cannot open octree file"},
         {"oconv -b 0 0 0 4 -i radiance.oct ball.rad", "oconv: only one of '-b' or '-i'"},
         {"oconv -f -i radiance.oct far.rad", "oconv: far.rad:1: boundary does not encompass scene (sphere \"far\" is outside it)"},
@@ -118,6 +121,24 @@ TEST(OconvCli, BadInputIsRefusedWithNothingWritten) {
     Output fits = brume_test::runBrume("oconv -b 0 0 0 4 ball.rad", dir);
     EXPECT_EQ(fits.status, 0) << fits.err;
     EXPECT_NE(fits.out.find(std::string("-1e-05\0-1e-05\0-1e-05\0004.00002\0", 29)), std::string::npos);  // -b less and plus OMARGIN
+}
+
+// More than 511 objects meeting everywhere in one cube (Radiance's limit on a leaf's list): the first 511 are
+// listed, and a warning names the first left out, unless -w.
+TEST(OconvCli, ALeafOverRadiancesLimitIsWarnedOf) {
+    fs::path dir = sceneCase("overflow");
+    std::ofstream pile(dir / "pile.rad");
+    pile << "void plastic m 0 0 5 .5 .5 .5 0 0\n";
+    for (int i = 0; i < 520; ++i) pile << "m polygon p" << i << " 0 0 9 0 0 0 1 0 0 0 1 0\n";
+    pile.close();
+    Output warned = brume_test::runBrume("oconv pile.rad > pile.oct", dir);
+    EXPECT_EQ(warned.status, 0);
+    EXPECT_NE(warned.err.find("oconv: warning - set overflow: more than 511 objects meet one cube that is divided no further "
+                              "(first left out: polygon \"p511\")"),
+              std::string::npos) << warned.err;
+    Output quiet = brume_test::runBrume("oconv -w pile.rad > pile.oct", dir);
+    EXPECT_EQ(quiet.status, 0);
+    EXPECT_EQ(quiet.err, "");
 }
 
 // Honeybee's annual-daylight recipe (pollination/annual-daylight 2025, honeybee-radiance's CLI) runs these
