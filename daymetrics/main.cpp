@@ -8,10 +8,14 @@
 #include <sstream>
 
 #include "daylight/annual_metrics.h"
+#include "daylight/sensor_plan.h"
+#include "io/ray_reader.h"
 #include "matrix/matrix_file.h"
 #include "sky/weather_tape.h"
 #include "util/error.h"
+#include "util/header.h"
 #include "util/options.h"
+#include "util/pending_file.h"
 
 using namespace brume;
 
@@ -21,7 +25,7 @@ const std::string kUsage = "usage: daymetrics [options] illuminance.mtx\n";
 
 struct Options {
     DaylightThresholds thresholds;
-    std::string hours, schedule, direct, weather, grid;
+    std::string hours, schedule, direct, weather, grid, points, maps;
     double sunLux = 1000;
     int sunHours = 250;
 };
@@ -39,6 +43,8 @@ OptionTable makeTable(Options& o) {
     t.add("-weather", 1, "a weather tape (.wea or .epw) whose brightest half of the year is EN 17037's daylight hours",
           [&o](const auto& a) { o.weather = a[0]; });
     t.add("-g", 1, "write the grid's metrics (sDA, ASE, EN 17037) to this CSV file", [&o](const auto& a) { o.grid = a[0]; });
+    t.add("-pts", 1, "the sensors (x y z dx dy dz a line, as rtrace reads them), for -maps", [&o](const auto& a) { o.points = a[0]; });
+    t.add("-maps", 1, "write each metric over the plan of the sensors (-pts) to prefix_metric.hdr", [&o](const auto& a) { o.maps = a[0]; });
     return t;
 }
 
@@ -95,11 +101,51 @@ std::vector<double> diffuseOfYear(const std::string& path) {
     return diffuse;
 }
 
+std::vector<dvec3> sensorPoints(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot open '" + path + "'");
+    RayReader reader(in, 'a', path);
+    std::vector<dvec3> points;
+    for (std::array<double, 6> r; reader.next(r);) points.push_back(dvec3(r[0], r[1], r[2]));
+    return points;
+}
+
+struct MapColumn {
+    const char* name;
+    const char* what;
+    double SensorMetrics::*value;
+};
+
+// Each metric over the plan: prefix_da.hdr and so on, and prefix_sun_hours.hdr with the direct sun.
+void writeMaps(const Options& o, const std::vector<SensorMetrics>& metrics, const std::vector<int>& sun,
+               const std::string& command) {
+    std::vector<dvec3> points = sensorPoints(o.points);
+    if (points.size() != metrics.size())
+        throw Error(o.points + ": " + std::to_string(points.size()) + " sensors for a matrix of " + std::to_string(metrics.size()));
+    SensorPlan plan(points);
+    const MapColumn columns[] = {{"da", "daylight autonomy", &SensorMetrics::da},
+                                 {"cda", "continuous daylight autonomy", &SensorMetrics::cda},
+                                 {"udi_lower", "UDI below the lower threshold", &SensorMetrics::udiLower},
+                                 {"udi", "useful daylight illuminance", &SensorMetrics::udi},
+                                 {"udi_upper", "UDI above the upper threshold", &SensorMetrics::udiUpper}};
+    auto write = [&](const std::string& name, const std::string& what, const std::vector<double>& values) {
+        Picture p = plan.map(values, {command, "DAYMETRICS=" + what + " (0 outside the sensors' cells)"});
+        writeWhole(o.maps + "_" + name + ".hdr", [&](std::ostream& out) { writeRadiancePicture(out, p); });
+    };
+    for (const MapColumn& c : columns) {
+        std::vector<double> values;
+        for (const SensorMetrics& m : metrics) values.push_back(m.*c.value);
+        write(c.name, std::string(c.what) + ", percent of the occupied hours", values);
+    }
+    if (!sun.empty()) write("sun_hours", "occupied hours of direct sun above the ASE illuminance", {sun.begin(), sun.end()});
+}
+
 int run(int argc, char** argv) {
     Options o;
     OptionTable table = makeTable(o);
     std::vector<std::string> operands = operandsAfterOptions(table, argc, argv, kUsage);
     if (operands.size() != 1) throw UsageError("one illuminance matrix", kUsage + table.usage());
+    if (o.maps.empty() != o.points.empty()) throw UsageError("-maps and -pts go together", kUsage + table.usage());
     std::vector<int> hours = o.hours.empty() ? std::vector<int>{} : columnHours(o.hours);
     std::vector<bool> occupied = eightToSix();
     if (!o.schedule.empty()) {
@@ -117,6 +163,7 @@ int run(int argc, char** argv) {
     }
     std::optional<En17037> en;
     if (!o.weather.empty()) en = en17037(e, daylightHours(diffuseOfYear(o.weather)));
+    if (!o.maps.empty()) writeMaps(o, metrics, sun, commandLine(std::vector<std::string>(argv, argv + argc)));
     std::printf("sensor,da,cda,udi_lower,udi,udi_upper%s\n", sun.empty() ? "" : ",sun_hours");
     for (int s = 0; s < e.sensors; ++s) {
         const SensorMetrics& m = metrics[s];

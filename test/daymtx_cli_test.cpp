@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "io/picture.h"
 #include "same_words.h"
 
 namespace {
@@ -78,6 +79,23 @@ void expectRefused(const fs::path& dir, std::initializer_list<Refusal> cases) {
         EXPECT_TRUE(r.out.empty()) << c.command << "\n" << r.out.substr(0, 200);
         EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.command << "\n" << r.err;
     }
+}
+
+// daymetrics' hand-made year in `dir`: the sensor of AnnualMetrics' test (Honeybee's numbers) and a brighter
+// one over nine hours (ill.mtx, the columns' hours in hours.txt), ten occupied hours (schedule.txt) and the
+// direct sun of three of them at the first sensor (sun.mtx).
+void writeSensorYear(const fs::path& dir) {
+    std::ofstream(dir / "ill.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=9\nNCOMP=1\nFORMAT=ascii\n\n"
+                                          "0 150 299.99 300 600 3000 3000.5 50 5000\n"
+                                          "400 400 400 400 400 400 400 400 400\n";
+    std::ofstream(dir / "sun.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=9\nNCOMP=1\nFORMAT=ascii\n\n"
+                                          "0 0 0 0 0 0 1001 1001 1001\n0 0 0 0 0 0 0 0 0\n";
+    std::ofstream hours(dir / "hours.txt");
+    for (int h = 8; h <= 16; ++h) hours << h + 0.5 << "\n";
+    hours.close();
+    std::ofstream schedule(dir / "schedule.txt");
+    for (int h = 0; h < 8760; ++h) schedule << ((h >= 8 && h <= 15) || h == 20 || h == 21 ? 1 : 0) << "\n";
+    schedule.close();
 }
 
 }  // namespace
@@ -213,21 +231,10 @@ TEST(DaymtxCli, MissingIrradianceIsAnError) {
     EXPECT_EQ(r.err.rfind("gendaymtx: gap.epw:20: missing required irradiances", 0), 0u) << r.err;
 }
 
-// daymetrics on the hand-made sensor of AnnualMetrics' test (Honeybee's numbers) and a brighter one, with the
-// hours of its columns, a schedule and the direct sun; and its errors.
+// daymetrics on the hand-made year, with the hours of its columns, a schedule and the direct sun; and its errors.
 TEST(DaymtxCli, DaymetricsWritesPerSensorAndGridMetrics) {
     fs::path scratch = brume_test::scratchDir("daymetrics");
-    std::ofstream(scratch / "ill.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=9\nNCOMP=1\nFORMAT=ascii\n\n"
-                                          "0 150 299.99 300 600 3000 3000.5 50 5000\n"
-                                          "400 400 400 400 400 400 400 400 400\n";
-    std::ofstream(scratch / "sun.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=9\nNCOMP=1\nFORMAT=ascii\n\n"
-                                          "0 0 0 0 0 0 1001 1001 1001\n0 0 0 0 0 0 0 0 0\n";
-    std::ofstream hours(scratch / "hours.txt");
-    for (int h = 8; h <= 16; ++h) hours << h + 0.5 << "\n";
-    hours.close();
-    std::ofstream schedule(scratch / "schedule.txt");
-    for (int h = 0; h < 8760; ++h) schedule << ((h >= 8 && h <= 15) || h == 20 || h == 21 ? 1 : 0) << "\n";
-    schedule.close();
+    writeSensorYear(scratch);
     Output r = runIn(scratch, "daymetrics -hours hours.txt -schedule schedule.txt -direct sun.mtx -ah 2 -g grid.csv ill.mtx");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.out, "sensor,da,cda,udi_lower,udi,udi_upper,sun_hours\n"
@@ -239,6 +246,34 @@ TEST(DaymtxCli, DaymetricsWritesPerSensorAndGridMetrics) {
                    {"daymetrics -hours hours.txt -schedule hours.txt ill.mtx", "daymetrics: hours.txt: 9 values, not 8760"},
                    {"daymetrics -hours hours.txt -direct grid.csv ill.mtx", "daymetrics: grid.csv: not a number"},
                    {"daymetrics", "daymetrics: one illuminance matrix"}});
+}
+
+// The metrics over the plan of the sensors: one picture a metric, each sensor's cell its value; the sun's hours
+// with -direct. Refused: -maps without -pts, and sensors that do not match the matrix (stdout and maps empty).
+TEST(DaymtxCli, DaymetricsDrawsEachMetricOverThePlan) {
+    fs::path scratch = brume_test::scratchDir("daymetrics_maps");
+    std::ofstream(scratch / "grid.pts") << "2 3 0.75 0 0 1\n3 3 0.75 0 0 1\n";
+    std::ofstream(scratch / "three.pts") << "2 3 0.75 0 0 1\n3 3 0.75 0 0 1\n4 3 0.75 0 0 1\n";
+    writeSensorYear(scratch);
+    Output r = runIn(scratch, "daymetrics -hours hours.txt -schedule schedule.txt -direct sun.mtx -pts grid.pts -maps plan ill.mtx");
+    ASSERT_EQ(r.status, 0) << r.err;
+    brume::Picture da = brume::readPicture((scratch / "plan_da.hdr").string());
+    ASSERT_EQ(da.width, 16);
+    ASSERT_EQ(da.height, 8);
+    // The sensors' DA (40 and 80 %, as DaymetricsWritesPerSensorAndGridMetrics), to RGBE's 8-bit mantissas.
+    EXPECT_NEAR(da.at(3, 4)[1], 40, 0.4);
+    EXPECT_NEAR(da.at(12, 4)[1], 80, 0.8);
+    EXPECT_NE(std::find(da.header.begin(), da.header.end(),
+                        "VIEW= -vtl -vp 2.5 3 0.75 -vd 0 0 -1 -vu 0 1 0 -vh 2 -vv 1"), da.header.end());
+    brume::Picture sun = brume::readPicture((scratch / "plan_sun_hours.hdr").string());
+    EXPECT_NEAR(sun.at(3, 4)[0], 2, 0.02);
+    EXPECT_EQ(sun.at(12, 4)[0], 0.f);
+    for (const char* metric : {"cda", "udi_lower", "udi", "udi_upper"})
+        EXPECT_TRUE(fs::exists(scratch / ("plan_" + std::string(metric) + ".hdr"))) << metric;
+    expectRefused(scratch, {{"daymetrics -hours hours.txt -maps refused ill.mtx", "daymetrics: -maps and -pts go together"},
+                            {"daymetrics -hours hours.txt -pts three.pts -maps refused ill.mtx",
+                             "daymetrics: three.pts: 3 sensors for a matrix of 2"}});
+    EXPECT_FALSE(fs::exists(scratch / "refused_da.hdr"));
 }
 
 // EN 17037's daylight hours from a real year: sensors at a steady 400 lx meet the target at 300 lx (level 1)
