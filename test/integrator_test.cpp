@@ -151,6 +151,32 @@ TEST(Integrator, PathsThroughMirrorsAreCountedOnceWithOrWithoutImages) {
     EXPECT_NEAR(b, a, 0.03 * a);
 }
 
+// A sensor facing a glass wall, a sun behind it: the sensor's only light is the sun's reflection in the glass,
+// which no next-event estimation reaches. A view ray sees the reflected sun; the sensor's diffuse paths find a
+// small sun there by rare luck only (a 2° sun: about six rays of the 81,920 here) and drop it, as Radiance drops
+// every source met so; a large source (a 20° disc) is found often and counted.
+TEST(Integrator, SmallSourcesOnlyChanceFindsAfterADiffuseBounceAreDropped) {
+    auto scene = [](double angle) {
+        return "void light solar 0 0 3 1e4 1e4 1e4\n"
+               "solar source sun 0 0 4 0 -1 1 " + std::to_string(angle) + "\n"
+               "void glass pane 0 0 3 .9 .9 .9\n"
+               "pane polygon wall 0 0 12 -50 1 -50 50 1 -50 50 1 50 -50 1 50\n";
+    };
+    RenderSettings s = fixedSeed();
+    s.ambientBounces = 1, s.ambientDivisions = 4096;
+    TestScene small(scene(2)), large(scene(20));
+    Integrator a(small.render, s), b(large.render, s);
+    const dvec3 towardReflection = glm::normalize(dvec3(0, 1, 1));
+    EXPECT_GT(test::trace(a, dvec3(0), towardReflection, 0).value[0], 100.f);  // the glass reflects ~5 %: ~500
+    double smallSum = 0, largeSum = 0;
+    for (int i = 0; i < 20; ++i) {
+        smallSum += test::irradiance(a, dvec3(0), dvec3(0, 1, 0), uint64_t(i)).value[0];
+        largeSum += test::irradiance(b, dvec3(0), dvec3(0, 1, 0), uint64_t(i)).value[0];
+    }
+    EXPECT_EQ(smallSum, 0);
+    EXPECT_GT(largeSum, 0);
+}
+
 // Shadow rays skip the surface-by-surface walk only at surfaces that stop every one of them; anything that
 // passes light, depends on the source, is cut away or varies from hit to hit is left to the walk.
 TEST(RenderScene, OnlyPlainlyOpaqueSurfacesBlockShadowRaysOutright) {

@@ -13,6 +13,10 @@ using namespace integrator_detail;
 
 namespace {
 
+// Sources smaller than this (sr; a cone of 0.05 rad, the sun's is 6.8e-5) that a path meets only through a specular
+// bounce after a diffuse one are met by chance: see foundByChance.
+constexpr double kChanceSolidAngle = 2e-3;
+
 uint64_t runSeed(const RenderSettings& settings) {
     return settings.randomSampling
                ? mixBits(static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()))
@@ -284,8 +288,10 @@ Spectrum Integrator::escaped(const Ray& ray, const PathState& state, PathContext
             Spectrum le = emitted();
             if (glows) return metSource(le, float(portals_.rayShare(state, ray.dir, ctx.scratch)), modifier, ray, nullptr, state, ctx);
             if (state.viaMirror >= 0) return Spectrum(0.f);  // next-event's, through the mirror's image
-            if (state.kind != PathState::Kind::Sampled)
+            if (state.kind != PathState::Kind::Sampled) {
+                if (foundByChance(light, state, ray.org)) return Spectrum(0.f);
                 return settings_.directVisible ? metSource(le, 1.f, modifier, ray, nullptr, state, ctx) : Spectrum(0.f);
+            }
             return sampledSourceShare(le, li, state, ray, nullptr, ctx, sourceShare);
         }
     }
@@ -316,6 +322,7 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     Spectrum le = e.emitted(-ray.dir) * sh.pattern;
     if (state.viaMirror >= 0 && li >= 0 && e.kind != Emitter::Kind::Glow) return Spectrum(0.f);  // via the image
     int modifier = scene_.surfaceModifier(hit.surface);
+    if (!sampled && li >= 0 && foundByChance(scene_.lights()[li], state, ray.org)) return Spectrum(0.f);
     // -dv- hides sources from the rays that would see them, not the direct light sampled rays carry.
     if (!sampled)
         return settings_.directVisible || distantGlow ? metSource(le, 1.f, modifier, ray, &hit, state, ctx) : Spectrum(0.f);
@@ -323,6 +330,16 @@ Spectrum Integrator::emitterHit(const Ray& ray, const SurfaceHit& hit, const Sha
     if (e.kind == Emitter::Kind::Glow && e.glowRadius < 0) return Spectrum(0.f);  // never seen by sampled rays
     if (li < 0) return metSource(le, 1.f, modifier, ray, &hit, state, ctx);  // not sampled as a source: only paths find it
     return sampledSourceShare(le, li, state, ray, &hit, ctx, sourceShare);
+}
+
+// Radiance drops every source a path meets through a specular bounce after a diffuse one (a glass pane's
+// reflection, a polished floor): next-event estimation at the diffuse point cannot reach it there. Brume counts
+// such paths, unbiased, but for sources so small that a diffuse ray finds them through the bounce by rare luck
+// only: the sun reflected by a window onto its sill came as one path in millions carrying 10⁴ times the rest,
+// and the irradiance cache spread such a record over sensors across the room (58 times their light). Those are
+// dropped, as in Radiance.
+bool Integrator::foundByChance(const Light& light, const PathState& state, const dvec3& from) const {
+    return state.kind == PathState::Kind::Specular && state.ambientLevel > 0 && light.roughSolidAngle(from) < kChanceSolidAngle;
 }
 
 // The light `le` of a source (of `modifier`) a ray meets, `share` of which counts: told to the contributions.

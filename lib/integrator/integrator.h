@@ -114,6 +114,7 @@ private:
     Spectrum escaped(const Ray& ray, const PathState& state, PathContext& ctx, Spectrum* sourceShare) const;
     Spectrum passThrough(const Ray& ray, const SurfaceHit& hit, const PathState& state, PathContext& ctx,
                          Spectrum* sourceShare) const;
+    bool foundByChance(const Light& light, const PathState& state, const dvec3& from) const;
     Spectrum sampledSourceShare(const Spectrum& le, int light, const PathState& state, const Ray& ray,
                                 const SurfaceHit* hit, PathContext& ctx, Spectrum* sourceShare) const;
     Spectrum sensorIrradiance(const dvec3& point, const dvec3& n, const SurfaceId& surface, double distance,
