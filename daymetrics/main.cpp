@@ -11,6 +11,8 @@
 #include "daylight/sensor_plan.h"
 #include "io/ray_reader.h"
 #include "matrix/matrix_file.h"
+#include "matrix/symbolic_components.h"
+#include "spectrum/colorimetry.h"
 #include "sky/weather_tape.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -28,11 +30,14 @@ struct Options {
     std::string hours, schedule, direct, weather, grid, points, maps;
     double sunLux = 1000;
     int sunHours = 250;
+    bool melanopic = false;
+    std::optional<double> target;  // -t, else the quantity's default
 };
 
 OptionTable makeTable(Options& o) {
     OptionTable t;
-    t.add("-t", 1, "DA's threshold, lx (default 300)", [&o](const auto& a) { o.thresholds.target = toReal("-t", a[0]); });
+    t.addBool("-melanopic", o.melanopic, "melanopic EDI rather than illuminance: the share of occupied hours with -t or more");
+    t.add("-t", 1, "DA's threshold, lx (default 300; melanopic EDI: 250)", [&o](const auto& a) { o.target = toReal("-t", a[0]); });
     t.add("-lt", 1, "UDI's lower threshold, lx (default 100)", [&o](const auto& a) { o.thresholds.lower = toReal("-lt", a[0]); });
     t.add("-ut", 1, "UDI's upper threshold, lx (default 3000)", [&o](const auto& a) { o.thresholds.upper = toReal("-ut", a[0]); });
     t.add("-hours", 1, "the columns' hours of the year, one a line (Honeybee's sun-up-hours.txt)", [&o](const auto& a) { o.hours = a[0]; });
@@ -66,10 +71,30 @@ std::vector<double> readColumn(const std::string& path) {
     return values;
 }
 
-HourlyIlluminance illuminance(const std::string& spec, const std::vector<int>& hours) {
+// The weights that turn a matrix's components into lux: illuminance (RGB irradiance: Honeybee's 179 lm/W × Radiance's
+// Y; spectral: each band's share of ȳ × 179), or melanopic EDI (CIE S 026: Radiance's melanopic value, rmtxop -c
+// M's, times ∫ȳ·D65 / ∫s_mel·D65, so that daylight D65 has the same EDI as illuminance), which only colours give.
+std::vector<double> luxWeights(const Matrix& m, bool melanopic) {
+    if (melanopic) {
+        if (m.comps == 1)
+            throw Error("one component may be illuminance or melanopic: -melanopic needs the RGB or spectral matrix (without rmtxop -c)");
+        std::vector<double> w = symbolWeights("M", m);
+        for (double& v : w) v *= observerWeights().melanopicToDaylight;
+        return w;
+    }
+    if (m.comps == 1) return {1};
+    if (m.comps == 3) return {47.4, 119.9, 11.6};
+    return symbolWeights("Y", m);
+}
+
+HourlyIlluminance illuminance(const std::string& spec, const std::vector<int>& hours, bool melanopic = false) {
     Matrix m = readMatrix(spec);
-    if (m.comps == 3) m = transformed(m, {47.4, 119.9, 11.6});  // RGB irradiance to lux: 179 lm/W × Radiance's Y
-    if (m.comps != 1) throw Error(spec + ": illuminance in 1 component (lx) or 3 (RGB), not " + std::to_string(m.comps));
+    if (m.comps == 2) throw Error(spec + ": illuminance in 1 component (lx), 3 (RGB) or more (spectral), not 2");
+    try {
+        m = transformed(m, luxWeights(m, melanopic));
+    } catch (const Error& e) {
+        throw Error(spec + ": " + e.what());
+    }
     HourlyIlluminance e;
     e.sensors = m.rows;
     if (!hours.empty()) e.hours = hours;
@@ -110,34 +135,110 @@ std::vector<dvec3> sensorPoints(const std::string& path) {
     return points;
 }
 
+// One value a sensor, drawn over the plan as prefix_name.hdr.
 struct MapColumn {
-    const char* name;
-    const char* what;
-    double SensorMetrics::*value;
+    std::string name, what;
+    std::vector<double> values;
 };
 
-// Each metric over the plan: prefix_da.hdr and so on, and prefix_sun_hours.hdr with the direct sun.
-void writeMaps(const Options& o, const std::vector<SensorMetrics>& metrics, const std::vector<int>& sun,
-               const std::string& command) {
+void writeMaps(const Options& o, const std::vector<MapColumn>& columns, const std::string& command) {
     std::vector<dvec3> points = sensorPoints(o.points);
-    if (points.size() != metrics.size())
-        throw Error(o.points + ": " + std::to_string(points.size()) + " sensors for a matrix of " + std::to_string(metrics.size()));
+    const size_t sensors = columns.front().values.size();
+    if (points.size() != sensors)
+        throw Error(o.points + ": " + std::to_string(points.size()) + " sensors for a matrix of " + std::to_string(sensors));
     SensorPlan plan(points);
-    const MapColumn columns[] = {{"da", "daylight autonomy", &SensorMetrics::da},
-                                 {"cda", "continuous daylight autonomy", &SensorMetrics::cda},
-                                 {"udi_lower", "UDI below the lower threshold", &SensorMetrics::udiLower},
-                                 {"udi", "useful daylight illuminance", &SensorMetrics::udi},
-                                 {"udi_upper", "UDI above the upper threshold", &SensorMetrics::udiUpper}};
-    auto write = [&](const std::string& name, const std::string& what, const std::vector<double>& values) {
-        Picture p = plan.map(values, {command, "DAYMETRICS=" + what + " (0 outside the sensors' cells)"});
-        writeWhole(o.maps + "_" + name + ".hdr", [&](std::ostream& out) { writeRadiancePicture(out, p); });
-    };
     for (const MapColumn& c : columns) {
-        std::vector<double> values;
-        for (const SensorMetrics& m : metrics) values.push_back(m.*c.value);
-        write(c.name, std::string(c.what) + ", percent of the occupied hours", values);
+        Picture p = plan.map(c.values, {command, "DAYMETRICS=" + c.what + " (0 outside the sensors' cells)"});
+        writeWhole(o.maps + "_" + c.name + ".hdr", [&](std::ostream& out) { writeRadiancePicture(out, p); });
     }
-    if (!sun.empty()) write("sun_hours", "occupied hours of direct sun above the ASE illuminance", {sun.begin(), sun.end()});
+}
+
+std::vector<double> column(const std::vector<SensorMetrics>& metrics, double SensorMetrics::*value) {
+    std::vector<double> values;
+    for (const SensorMetrics& m : metrics) values.push_back(m.*value);
+    return values;
+}
+
+std::unique_ptr<std::FILE, int (*)(std::FILE*)> gridFile(const std::string& path) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{std::fopen(path.c_str(), "w"), std::fclose};
+    if (!f) throw Error("cannot open '" + path + "' for output");
+    return f;
+}
+
+int occupiedCount(const std::vector<bool>& occupied) { return int(std::count(occupied.begin(), occupied.end(), true)); }
+
+// The year as daylight: DA, cDA, UDI bands per sensor (the direct sun's hours with -direct), sDA, ASE and EN
+// 17037 per grid.
+void writeDaylight(const Options& o, const HourlyIlluminance& e, const std::vector<int>& hours,
+                   const std::vector<bool>& occupied, const std::string& command) {
+    DaylightThresholds thresholds = o.thresholds;
+    thresholds.target = o.target.value_or(300);
+    std::vector<SensorMetrics> metrics = annualMetrics(e, occupied, thresholds);
+    std::vector<int> sun;
+    if (!o.direct.empty()) {
+        HourlyIlluminance d = illuminance(o.direct, hours);
+        if (d.sensors != e.sensors) throw Error(o.direct + ": " + std::to_string(d.sensors) + " sensors, not " + std::to_string(e.sensors));
+        sun = hoursAbove(d, occupied, o.sunLux);
+    }
+    std::optional<En17037> en;
+    if (!o.weather.empty()) en = en17037(e, daylightHours(diffuseOfYear(o.weather)));
+    if (!o.maps.empty()) {
+        std::vector<MapColumn> maps = {
+            {"da", "daylight autonomy, percent of the occupied hours", column(metrics, &SensorMetrics::da)},
+            {"cda", "continuous daylight autonomy, percent of the occupied hours", column(metrics, &SensorMetrics::cda)},
+            {"udi_lower", "UDI below the lower threshold, percent of the occupied hours", column(metrics, &SensorMetrics::udiLower)},
+            {"udi", "useful daylight illuminance, percent of the occupied hours", column(metrics, &SensorMetrics::udi)},
+            {"udi_upper", "UDI above the upper threshold, percent of the occupied hours", column(metrics, &SensorMetrics::udiUpper)}};
+        if (!sun.empty())
+            maps.push_back({"sun_hours", "occupied hours of direct sun above the ASE illuminance", {sun.begin(), sun.end()}});
+        writeMaps(o, maps, command);
+    }
+    std::printf("sensor,da,cda,udi_lower,udi,udi_upper%s\n", sun.empty() ? "" : ",sun_hours");
+    for (int s = 0; s < e.sensors; ++s) {
+        const SensorMetrics& m = metrics[s];
+        std::printf("%d,%.2f,%.2f,%.2f,%.2f,%.2f", s, m.da, m.cda, m.udiLower, m.udi, m.udiUpper);
+        if (!sun.empty()) std::printf(",%d", sun[s]);
+        std::printf("\n");
+    }
+    if (o.grid.empty()) return;
+    auto f = gridFile(o.grid);
+    std::fprintf(f.get(), "metric,value\nsensors,%d\noccupied_hours,%d\nsda,%.2f\n", e.sensors, occupiedCount(occupied),
+                 spatialDaylightAutonomy(metrics));
+    if (!sun.empty()) std::fprintf(f.get(), "ase,%.2f\n", annualSunlightExposure(sun, o.sunHours));
+    if (en) {
+        for (int l = 0; l < 3; ++l)
+            std::fprintf(f.get(), "en17037_target_%g,%.2f\nen17037_minimum_%g,%.2f\n", kEnTarget[l], en->targetShare[l],
+                         kEnMinimum[l], en->minimumShare[l]);
+        std::fprintf(f.get(), "en17037_target_level,%d\nen17037_minimum_level,%d\nen17037_level,%d\n", en->targetLevel,
+                     en->minimumLevel, en->level);
+    }
+    if (std::fflush(f.get()) != 0) throw Error(o.grid + ": write error");
+}
+
+// The year as melanopic EDI: per sensor the share of the occupied hours with at least the threshold, and
+// their number; per grid the mean share and the share of sensors reaching it half the time.
+void writeMelanopic(const Options& o, const HourlyIlluminance& e, const std::vector<bool>& occupied,
+                    const std::string& command) {
+    if (!o.direct.empty() || !o.weather.empty()) throw Error("-direct and -weather are daylight's, not -melanopic's");
+    DaylightThresholds thresholds;
+    thresholds.target = o.target.value_or(250);
+    std::vector<SensorMetrics> metrics = annualMetrics(e, occupied, thresholds);
+    if (!o.maps.empty())
+        writeMaps(o, {{"melanopic_da", "share of the occupied hours with melanopic EDI of " + std::to_string(int(thresholds.target)) +
+                                           " lx or more, percent", column(metrics, &SensorMetrics::da)}},
+                  command);
+    const int occupiedHours = occupiedCount(occupied);
+    std::printf("sensor,melanopic_da,melanopic_hours\n");
+    for (int s = 0; s < e.sensors; ++s)
+        std::printf("%d,%.2f,%ld\n", s, metrics[s].da, std::lround(metrics[s].da * occupiedHours / 100));
+    if (o.grid.empty()) return;
+    double mean = 0;
+    for (const SensorMetrics& m : metrics) mean += m.da / e.sensors;
+    auto f = gridFile(o.grid);
+    std::fprintf(f.get(), "metric,value\nsensors,%d\noccupied_hours,%d\nmelanopic_threshold,%g\nmelanopic_da_mean,%.2f\n"
+                          "melanopic_sda,%.2f\n", e.sensors, occupiedHours, thresholds.target, mean,
+                 spatialDaylightAutonomy(metrics));
+    if (std::fflush(f.get()) != 0) throw Error(o.grid + ": write error");
 }
 
 int run(int argc, char** argv) {
@@ -153,39 +254,10 @@ int run(int argc, char** argv) {
         if (values.size() != kHoursInYear) throw Error(o.schedule + ": " + std::to_string(values.size()) + " values, not 8760");
         for (int h = 0; h < kHoursInYear; ++h) occupied[h] = values[h] > 0;
     }
-    HourlyIlluminance e = illuminance(operands[0], hours);
-    std::vector<SensorMetrics> metrics = annualMetrics(e, occupied, o.thresholds);
-    std::vector<int> sun;
-    if (!o.direct.empty()) {
-        HourlyIlluminance d = illuminance(o.direct, hours);
-        if (d.sensors != e.sensors) throw Error(o.direct + ": " + std::to_string(d.sensors) + " sensors, not " + std::to_string(e.sensors));
-        sun = hoursAbove(d, occupied, o.sunLux);
-    }
-    std::optional<En17037> en;
-    if (!o.weather.empty()) en = en17037(e, daylightHours(diffuseOfYear(o.weather)));
-    if (!o.maps.empty()) writeMaps(o, metrics, sun, commandLine(std::vector<std::string>(argv, argv + argc)));
-    std::printf("sensor,da,cda,udi_lower,udi,udi_upper%s\n", sun.empty() ? "" : ",sun_hours");
-    for (int s = 0; s < e.sensors; ++s) {
-        const SensorMetrics& m = metrics[s];
-        std::printf("%d,%.2f,%.2f,%.2f,%.2f,%.2f", s, m.da, m.cda, m.udiLower, m.udi, m.udiUpper);
-        if (!sun.empty()) std::printf(",%d", sun[s]);
-        std::printf("\n");
-    }
-    if (!o.grid.empty()) {
-        std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{std::fopen(o.grid.c_str(), "w"), std::fclose};
-        if (!f) throw Error("cannot open '" + o.grid + "' for output");
-        std::fprintf(f.get(), "metric,value\nsensors,%d\noccupied_hours,%d\nsda,%.2f\n", e.sensors,
-                     int(std::count(occupied.begin(), occupied.end(), true)), spatialDaylightAutonomy(metrics));
-        if (!sun.empty()) std::fprintf(f.get(), "ase,%.2f\n", annualSunlightExposure(sun, o.sunHours));
-        if (en) {
-            for (int l = 0; l < 3; ++l)
-                std::fprintf(f.get(), "en17037_target_%g,%.2f\nen17037_minimum_%g,%.2f\n", kEnTarget[l], en->targetShare[l],
-                             kEnMinimum[l], en->minimumShare[l]);
-            std::fprintf(f.get(), "en17037_target_level,%d\nen17037_minimum_level,%d\nen17037_level,%d\n", en->targetLevel,
-                         en->minimumLevel, en->level);
-        }
-        if (std::fflush(f.get()) != 0) throw Error(o.grid + ": write error");
-    }
+    HourlyIlluminance e = illuminance(operands[0], hours, o.melanopic);
+    const std::string command = commandLine(std::vector<std::string>(argv, argv + argc));
+    if (o.melanopic) writeMelanopic(o, e, occupied, command);
+    else writeDaylight(o, e, hours, occupied, command);
     return 0;
 }
 

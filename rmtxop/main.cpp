@@ -1,13 +1,12 @@
 // rmtxop: concatenate (multiply), add, multiply or divide element by element, transpose, transform and scale
 // matrices, left to right, as Radiance's rmtxop (see man/rmtxop.1).
 #include <array>
-#include <cctype>
-#include <map>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
 
 #include "matrix/matrix_file.h"
+#include "matrix/symbolic_components.h"
 #include "util/error.h"
 #include "util/header.h"
 
@@ -33,34 +32,10 @@ bool isNumber(const std::string& w) {
     return !w.empty() && *end == '\0';
 }
 
-// Radiance's symbolic components of an RGB matrix: R, G, B; X, Y, Z (CIE, Y the luminance), S (scotopic),
-// M (melanopic) times 179 lm/W (S: 412), lower case without it; A, the mean. The weights are Radiance 6.1's
-// rmtxop's for its RGB primaries (read off `rmtxop -fd -c x` and so on applied to the unit colours).
-std::vector<double> symbolWeights(const std::string& symbols, int comps) {
-    if (comps != 3) throw Error("symbolic components (-c " + symbols + ") need an RGB matrix, not " + std::to_string(comps) + " components");
-    static const std::map<char, std::array<double, 3>> kUnscaled = {
-        {'x', {0.5141445994377136, 0.3238844871520996, 0.16197089850902557}},
-        {'y', {0.26510581374168396, 0.6701058149337769, 0.06478835642337799}},
-        {'z', {0.0241005290299654, 0.12285273522138596, 0.853046715259552}},
-        {'s', {0.011291676200926304, 0.7089188694953918, 0.27978941798210144}},
-        {'m', {0.0018310826271772385, 0.6002899408340454, 0.3978790044784546}},
-        {'r', {1, 0, 0}}, {'g', {0, 1, 0}}, {'b', {0, 0, 1}}, {'a', {1.0 / 3, 1.0 / 3, 1.0 / 3}}};
-    std::vector<double> w;
-    for (char c : symbols) {
-        char lower = char(std::tolower(static_cast<unsigned char>(c)));
-        auto it = kUnscaled.find(lower);
-        if (it == kUnscaled.end()) throw Error(std::string("symbolic component '") + c + "' is not one of R G B X Y Z S M A");
-        bool efficacy = c != lower && std::string("xyzsm").find(lower) != std::string::npos;
-        double scale = !efficacy ? 1 : lower == 's' ? 412 : 179;
-        for (double v : it->second) w.push_back(float(float(v) * scale));  // Radiance's single precision
-    }
-    return w;
-}
-
 Matrix applied(Matrix m, const Changes& c, const Changes& defaults) {
     if (c.transpose) m = transposed(m);
     const Changes& t = c.weights.empty() && !c.symbols ? defaults : c;
-    if (t.symbols) m = transformed(m, symbolWeights(*t.symbols, m.comps));
+    if (t.symbols) m = transformed(m, symbolWeights(*t.symbols, m));
     else if (!t.weights.empty()) m = transformed(m, t.weights);
     if (!c.factors.empty()) scale(m, c.factors);
     return m;

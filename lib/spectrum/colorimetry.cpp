@@ -104,12 +104,12 @@ Matrix3 xyzToRgb(const Primaries& p) {
     return inverse(rgbToXyz(p)) * adaptation(kRadiancePrimaries.white, p.white);
 }
 
-namespace {
-
-ObserverWeights weightsOf(const SpectralSampling& s) {
+ObserverWeights observerWeightsOf(const SpectralSampling& s) {
     return {weights(cieX(), s), weights(cieY(), s), weights(cieZ(), s), weights(scotopicEfficiency(), s),
             weights(melanopicEfficiency(), s), daylightIntegral(cieY()) / daylightIntegral(melanopicEfficiency())};
 }
+
+namespace {
 
 std::once_flag gMade;
 std::atomic<bool> gAreMade{false};
@@ -119,7 +119,7 @@ ObserverWeights gWeights;
 
 const ObserverWeights& observerWeights() {
     std::call_once(gMade, [] {
-        gWeights = weightsOf(spectralSampling());
+        gWeights = observerWeightsOf(spectralSampling());
         gAreMade = true;
     });
     return gWeights;
@@ -128,7 +128,7 @@ const ObserverWeights& observerWeights() {
 // RGB runs rarely need the weights (scotopic and melanopic outputs): their first use makes them, and spares
 // the others parsing the CIE tables.
 void remakeObserverWeights() {
-    if (gAreMade) gWeights = weightsOf(spectralSampling());
+    if (gAreMade) gWeights = observerWeightsOf(spectralSampling());
     else if (!spectralSampling().isRgb()) observerWeights();
 }
 

@@ -53,6 +53,8 @@ struct ObserverWeights {
     // Melanopic to melanopic-equivalent daylight (D65) value: ∫ȳ D65 / ∫s_mel D65, the curves normalised.
     double melanopicToDaylight = 1;
 };
+// The weights of a sampling (its bands each flat, the curves' areas shared out as Radiance's spec_dot does).
+ObserverWeights observerWeightsOf(const SpectralSampling& s);
 // The weights of the sampling in effect, read without a lock on every value written: setSpectralSampling
 // remakes them (before any thread renders); made on first use otherwise.
 const ObserverWeights& observerWeights();
