@@ -68,7 +68,7 @@ double floorIrradiance(const Integrator& integrator, double x, double y, uint64_
 // xform with the N-th line of transforms.txt (translated, rotated, scaled, mirrored, iterated). Placed by an
 // instance with the same transform, every view ray and sensor gets the same value: shadows, the light inside
 // the instance (a source Brume samples, unlike Radiance) and all. To 1e-8 in distances, as a frozen octree
-// stores reals with 31-bit mantissas, and to 1e-6 in values, which are single precision.
+// stores reals with 31-bit mantissas, and to 1e-6 in values, which are single precision (sensors: see below).
 TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
     ScopedRayPath path(kDir.c_str());
     auto transforms = lines(kDir + "transforms.txt");
@@ -84,7 +84,8 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
         Integrator a(placed.render, s), b(xformed.render, s);
         Transform t = parseTransform(args).transform;
         // View rays from above onto the shelf, the ball, the disc, the post and the floor around, in the lamp's
-        // own coordinates, and sensors on the floor.
+        // own coordinates, and sensors on the floor (to 4e-6: a sensor sums 64 shadow rays, each rounded to single
+        // precision, up to 64 × 6e-8).
         const dvec3 targets[] = {{.1, .1, .5}, {-.15, -.12, .5}, {.8, 0, .3},   {.85, .05, .25},  {-.8, .25, .01},
                                  {0, .75, .2}, {1.2, 1, 0},      {0, 0, -1.05}, {.7, -.7, -1.05}, {-1.5, .3, -1.05}};
         double lit = 0;  // by the lamp inside the instance
@@ -95,7 +96,7 @@ TEST(Instance, PlacedOctreeEqualsTheXformedSurfaces) {
             EXPECT_LT(relative(ra.value, rb.value), 1e-6) << transforms[n] << " target " << i;
             dvec3 floor(p.x, p.y, -1.05);
             Spectrum ea = test::irradiance(a, floor, dvec3(0, 0, 1), i).value;
-            EXPECT_LT(relative(ea, test::irradiance(b, floor, dvec3(0, 0, 1), i).value), 1e-6)
+            EXPECT_LT(relative(ea, test::irradiance(b, floor, dvec3(0, 0, 1), i).value), 4e-6)
                 << transforms[n] << " sensor " << i;
             lit += ea[0];
         }

@@ -151,6 +151,19 @@ TEST(Integrator, PathsThroughMirrorsAreCountedOnceWithOrWithoutImages) {
     EXPECT_NEAR(b, a, 0.03 * a);
 }
 
+// A sensor right under the edge of a plate's shadow sees half of the sun's disc: 64 stratified shadow rays
+// put each estimate within 5 % of half the sun (one ray would read all or none).
+TEST(Integrator, ASensorInThePenumbraReadsItsShareOfTheSun) {
+    TestScene t("void light solar 0 0 3 1e5 1e5 1e5\n"
+                "solar source sun 0 0 4 0 0 1 0.5\n"
+                "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                "grey polygon plate 0 0 12 -5 -5 1 0 -5 1 0 5 1 -5 5 1\n");
+    const double half = 0.5 * 1e5 * 2 * std::numbers::pi * (1 - std::cos(0.25 * std::numbers::pi / 180));
+    Integrator integrator(t.render, fixedSeed());
+    for (int i = 0; i < 20; ++i)
+        EXPECT_NEAR(test::irradiance(integrator, dvec3(0), dvec3(0, 0, 1), uint64_t(i)).value[0], half, 0.05 * half) << i;
+}
+
 // A sensor facing a glass wall, a sun behind it: the sensor's only light is the sun's reflection in the glass,
 // which no next-event estimation reaches. A view ray sees the reflected sun; the sensor's diffuse paths find a
 // small sun there by rare luck only (a 2° sun: about six rays of the 81,920 here) and drop it, as Radiance drops

@@ -158,8 +158,9 @@ Spectrum Integrator::sensorIrradiance(const dvec3& point, const dvec3& n, const 
     {
         RayOutputs::Scope none(outputs, nullptr);
         const Spectrum one(1.f);
-        value = surfaces_.shade(sh, lobes, surface, rootOf(shading_.startingAt(point, ctx.scratch), ctx, one), ctx,
-                                nullptr);
+        PathState root = rootOf(shading_.startingAt(point, ctx.scratch), ctx, one);
+        root.sensor = true;
+        value = surfaces_.shade(sh, lobes, surface, root, ctx, nullptr);
     }
     outputs.endSensor(sh.point, dir, rec, value);
     return value;

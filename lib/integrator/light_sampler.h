@@ -27,7 +27,7 @@ public:
     LightSampler(const RenderScene& scene, const RenderSettings& settings, const HitShading& shading,
                  const Media& media, const ShadowRays& shadowRays)
         : scene_(scene), settings_(settings), shading_(shading), media_(media), shadowRays_(shadowRays),
-          flames_(shadowRays) {}
+          flames_(shadowRays), sensorRays_(sensorRaysPerSource(scene)) {}
 
     // The sources' and the flames' light scattered toward the viewer by `at` (leaving `surface`, none in a
     // medium), each source's taking its share (`shares`, if given) where it is not found.
@@ -67,6 +67,7 @@ private:
     Spectrum sourcesLd(const Scatterer& at, const SurfaceId& surface, const PathState& state, PathContext& ctx,
                        const SourceShares* shares) const;
     bool exactDirect(const PathState& state) const { return state.depth == 0; }
+    static int sensorRaysPerSource(const RenderScene& scene);
     int thresholdedCount(int count, double share) const;
     bool samplesSource(const Light& light, const SurfaceId& surface) const;
     std::optional<Spectrum> oneSourceOf(const Scatterer& at, const SurfaceId& surface, const PathState& state,
@@ -93,6 +94,7 @@ private:
     const Media& media_;
     const ShadowRays& shadowRays_;
     FlameLights flames_;
+    int sensorRays_;  // the fewest shadow rays a sensor sends each source
 };
 
 }  // namespace brume

@@ -68,6 +68,9 @@ struct PathState {
     // Where contributions are collected (contributions.h): what a unit of radiance along the ray adds to the
     // query's value, kept by whoever spawned the ray; else null.
     const Spectrum* throughput = nullptr;
+    // The query's own point is a sensor (rtrace -I, -i): its direct light is the answer itself, averaged with
+    // nothing. Its children are not.
+    bool sensor = false;
 };
 
 // Whether a path goes on past a scattering, and by how much its contribution grows if it does: Radiance's
@@ -94,6 +97,7 @@ public:
         child.reflections = parent.reflections + (reflection ? 1 : 0);
         child.depth = parent.depth + 1;
         child.viaMirror = -1;
+        child.sensor = false;
         boost = 1.f;
         if (!(child.weight > 0) || child.depth > integrator_detail::kSafetyDepth) return false;
         if (maxReflections_ > 0) return child.weight >= minWeight_ && child.reflections <= maxReflections_;
