@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <memory>
 #include <sstream>
 
 #include "daylight/annual_metrics.h"
@@ -159,10 +158,10 @@ std::vector<double> column(const std::vector<SensorMetrics>& metrics, double Sen
     return values;
 }
 
-std::unique_ptr<std::FILE, int (*)(std::FILE*)> gridFile(const std::string& path) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{std::fopen(path.c_str(), "w"), std::fclose};
-    if (!f) throw Error("cannot open '" + path + "' for output");
-    return f;
+std::string twoDecimals(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", x);
+    return text;
 }
 
 int occupiedCount(const std::vector<bool>& occupied) { return int(std::count(occupied.begin(), occupied.end(), true)); }
@@ -201,18 +200,17 @@ void writeDaylight(const Options& o, const HourlyIlluminance& e, const std::vect
         std::printf("\n");
     }
     if (o.grid.empty()) return;
-    auto f = gridFile(o.grid);
-    std::fprintf(f.get(), "metric,value\nsensors,%d\noccupied_hours,%d\nsda,%.2f\n", e.sensors, occupiedCount(occupied),
-                 spatialDaylightAutonomy(metrics));
-    if (!sun.empty()) std::fprintf(f.get(), "ase,%.2f\n", annualSunlightExposure(sun, o.sunHours));
-    if (en) {
+    writeWhole(o.grid, [&](std::ostream& out) {
+        out << "metric,value\nsensors," << e.sensors << "\noccupied_hours," << occupiedCount(occupied) << "\nsda,"
+            << twoDecimals(spatialDaylightAutonomy(metrics)) << "\n";
+        if (!sun.empty()) out << "ase," << twoDecimals(annualSunlightExposure(sun, o.sunHours)) << "\n";
+        if (!en) return;
         for (int l = 0; l < 3; ++l)
-            std::fprintf(f.get(), "en17037_target_%g,%.2f\nen17037_minimum_%g,%.2f\n", kEnTarget[l], en->targetShare[l],
-                         kEnMinimum[l], en->minimumShare[l]);
-        std::fprintf(f.get(), "en17037_target_level,%d\nen17037_minimum_level,%d\nen17037_level,%d\n", en->targetLevel,
-                     en->minimumLevel, en->level);
-    }
-    if (std::fflush(f.get()) != 0) throw Error(o.grid + ": write error");
+            out << "en17037_target_" << kEnTarget[l] << "," << twoDecimals(en->targetShare[l]) << "\nen17037_minimum_"
+                << kEnMinimum[l] << "," << twoDecimals(en->minimumShare[l]) << "\n";
+        out << "en17037_target_level," << en->targetLevel << "\nen17037_minimum_level," << en->minimumLevel
+            << "\nen17037_level," << en->level << "\n";
+    });
 }
 
 // The year as melanopic EDI: per sensor the share of the occupied hours with at least the threshold, and
@@ -234,11 +232,11 @@ void writeMelanopic(const Options& o, const HourlyIlluminance& e, const std::vec
     if (o.grid.empty()) return;
     double mean = 0;
     for (const SensorMetrics& m : metrics) mean += m.da / e.sensors;
-    auto f = gridFile(o.grid);
-    std::fprintf(f.get(), "metric,value\nsensors,%d\noccupied_hours,%d\nmelanopic_threshold,%g\nmelanopic_da_mean,%.2f\n"
-                          "melanopic_sda,%.2f\n", e.sensors, occupiedHours, thresholds.target, mean,
-                 spatialDaylightAutonomy(metrics));
-    if (std::fflush(f.get()) != 0) throw Error(o.grid + ": write error");
+    writeWhole(o.grid, [&](std::ostream& out) {
+        out << "metric,value\nsensors," << e.sensors << "\noccupied_hours," << occupiedHours << "\nmelanopic_threshold,"
+            << thresholds.target << "\nmelanopic_da_mean," << twoDecimals(mean) << "\nmelanopic_sda,"
+            << twoDecimals(spatialDaylightAutonomy(metrics)) << "\n";
+    });
 }
 
 int run(int argc, char** argv) {

@@ -102,7 +102,8 @@ int run(int argc, char** argv) {
     loadPlacedFiles(scene);
     BuiltOctree built = buildOctree(scene, count, command.build);
     if (built.overflowObject >= 0 && !command.quiet)
-        warn("set overflow: more than 511 objects meet one cube that is divided no further (first left out: " +
+        warn("set overflow: more than " + std::to_string(kMaxOctreeSet) +
+             " objects meet one cube that is divided no further (first left out: " +
              scene.objects[built.overflowObject].type + " \"" + scene.objects[built.overflowObject].name +
              "\"); Radiance's programs will miss them there");
     bool fromInput = false;

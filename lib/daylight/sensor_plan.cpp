@@ -43,20 +43,16 @@ public:
             }
         return best;
     }
-    // The distance from sensor i to its nearest other sensor (< `extent`, the plan's size), kept in `found`.
-    double nearestOther(int i, double extent) {
+    // The sensor nearest to sensor i but itself (all lie within `extent`, the plan's size, of each other).
+    int nearestOther(int i, double extent) const {
         const dvec3& p = sensors_[i];
         for (long rings = 1;; rings *= 2) {
             // A sensor found within `rings` buckets may lie farther than an unsearched one, unless it is
             // within (rings) bucket sizes of the point.
             int s = nearest(p.x, p.y, std::min(double(rings) * size_, 2 * extent), int(rings), i);
-            if (s >= 0) {
-                found = s;
-                return std::hypot(sensors_[s].x - p.x, sensors_[s].y - p.y);
-            }
+            if (s >= 0) return s;
         }
     }
-    int found = -1;
 
 private:
     long cell(double v) const { return long(std::floor(v / size_)); }
@@ -78,9 +74,10 @@ SensorPlan::SensorPlan(const std::vector<dvec3>& sensors) : sensors_(sensors.siz
         // Buckets about one grid step wide: the nearest neighbour is in the first ring or two of them.
         Buckets buckets(sensors, std::max(extent / std::sqrt(double(sensors.size())), 1e-9 * extent));
         for (size_t i = 0; i < sensors.size(); ++i) {
-            double d = buckets.nearestOther(int(i), extent);
+            int other = buckets.nearestOther(int(i), extent);
+            double d = std::hypot(sensors[other].x - sensors[i].x, sensors[other].y - sensors[i].y);
             if (d <= 1e-9 * extent)
-                throw Error("sensors " + std::to_string(i) + " and " + std::to_string(buckets.found) +
+                throw Error("sensors " + std::to_string(i) + " and " + std::to_string(other) +
                             " share x and y (a grid on two storeys?): one plan a storey");
             nearest.push_back(d);
         }

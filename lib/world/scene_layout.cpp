@@ -26,7 +26,6 @@ void addSurfaces(const Scene& scene, int begin, int end, bool prototype, std::ve
     }
 }
 
-
 // Places the instances and meshes among objects [begin, end), and those inside them, under `outer` (the
 // transform, modifier object and pattern transform of the path so far).
 class Placer {
