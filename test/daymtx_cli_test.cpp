@@ -224,6 +224,10 @@ TEST(DaymtxCli, BadInputIsNamedAndWritesNothing) {
     std::ofstream(scratch / "c.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=2\nNCOMP=1\nFORMAT=ascii\n\n1 2 3 4\n";
     std::ofstream(scratch / "f.mtx") << "#?RADIANCE\nNROWS=2\nNCOLS=2\nNCOMP=1\nFORMAT=float\n\n" << std::string(12, '\0');
     std::ofstream(scratch / "d.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=1\nNCOMP=3\nFORMAT=ascii\n\n1 2 3\n";
+    std::ofstream(scratch / "splits.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=1\nNCOMP=4\nWAVELENGTH_SPLITS= nan 588 480 380\n"
+                                              "FORMAT=ascii\n\n1 2 3 4\n";
+    std::ofstream(scratch / "narrow.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=1\nNCOMP=4\nWAVELENGTH_SPLITS= 500 490 480 470\n"
+                                              "FORMAT=ascii\n\n1 2 3 4\n";
     std::ofstream(scratch / "x.mtx") << "#?RADIANCE\nNROWS=1\nNCOLS=2\nNCOMP=1\nFORMAT=ascii\n\n1 1e999\n";
     expectRefused(scratch, {{"gendaymtx short.wea", "gendaymtx: short.wea:3: .wea header ends before its time_zone line"},
                    {"gendaymtx units.wea", "gendaymtx: units.wea:6: weather_data_file_units must be 1, 2 or 3"},
@@ -244,6 +248,8 @@ TEST(DaymtxCli, BadInputIsNamedAndWritesNothing) {
                    {"rmtxop c.mtx +", "rmtxop: an operator with no matrix after it"},
                    {"rmtxop -c 1 2 d.mtx", "rmtxop: 2 component weights for a matrix of 3 components"},
                    {"rmtxop -c XYZ c.mtx", "rmtxop: symbolic components (-c XYZ) need 3 components or more, not 1"},
+                   {"rmtxop -c Y splits.mtx", "rmtxop: 'WAVELENGTH_SPLITS= nan 588 480 380': the spectral range must span 50 nm"},
+                   {"rmtxop -c M narrow.mtx", "rmtxop: 'WAVELENGTH_SPLITS= 500 490 480 470': the spectral range must span 50 nm"},
                    {"dctimestep c.mtx b.mtx", "dctimestep: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
                    {"dctimestep 'c%03d.hdr' b.mtx", "dctimestep: component pictures"}});
 }

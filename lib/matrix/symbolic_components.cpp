@@ -54,8 +54,11 @@ SpectralSampling bandsOf(const Matrix& m) {
     s.channels = m.comps;
     for (const std::string& line : m.info) {
         double split[4];
-        if (std::sscanf(line.c_str(), "WAVELENGTH_SPLITS= %lf %lf %lf %lf", &split[0], &split[1], &split[2], &split[3]) == 4)
-            s.longest = std::max(split[0], split[3]), s.shortest = std::min(split[0], split[3]);
+        if (std::sscanf(line.c_str(), "WAVELENGTH_SPLITS= %lf %lf %lf %lf", &split[0], &split[1], &split[2], &split[3]) != 4)
+            continue;
+        s.longest = std::max(split[0], split[3]), s.shortest = std::min(split[0], split[3]);
+        if (!validSpectralRange(s.shortest, s.longest))
+            throw Error("'" + line + "': the spectral range must span 50 nm or more within 200 to 2000 nm");
     }
     return s;
 }

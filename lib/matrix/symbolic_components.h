@@ -10,7 +10,8 @@
 namespace brume {
 
 // The bands of a matrix of more than 3 components: of equal width over WAVELENGTH_SPLITS' range (its first
-// and last wavelengths), else over Radiance's 380-780 nm; the longest first.
+// and last wavelengths), else over Radiance's 380-780 nm; the longest first. Throws Error for a range Brume does
+// not sample (validSpectralRange).
 SpectralSampling bandsOf(const Matrix& m);
 
 // The weights (m.comps per letter, letter after letter) of R, G, B; X, Y, Z (CIE, Y the luminance), S

@@ -33,13 +33,17 @@ std::array<double, 2> SpectralSampling::band(int i) const {
 
 const SpectralSampling& spectralSampling() { return gSampling; }
 
+bool validSpectralRange(double shortest, double longest) {
+    return longest - shortest >= 50 && shortest >= 200 && longest <= 2000;
+}
+
 void setSpectralSampling(SpectralSampling s) {
     std::string option = "-cs " + std::to_string(s.channels);
     if (s.channels < 3) throw Error(option + ": at least 3 spectral samples");
     if (s.channels > Spectrum::kMaxChannels)
         throw Error(option + ": at most " + std::to_string(Spectrum::kMaxChannels) + " spectral samples");
     if (s.longest < s.shortest) std::swap(s.longest, s.shortest);
-    if (!(s.longest - s.shortest >= 50) || !(s.shortest >= 200) || !(s.longest <= 2000))
+    if (!validSpectralRange(s.shortest, s.longest))
         throw Error("-cw " + formatShort(s.shortest) + " " + formatShort(s.longest) +
                     ": the spectral range must span 50 nm or more within 200 to 2000 nm");
     gSampling = s;

@@ -24,6 +24,9 @@ struct SpectralSampling {
     bool operator==(const SpectralSampling&) const = default;
 };
 
+// Whether a range of wavelengths (nm) is one Brume samples: 50 nm or more within 200 to 2000 nm.
+bool validSpectralRange(double shortest, double longest);
+
 // The sampling in effect. Set it once, from the options, before anything makes a Spectrum that lasts.
 const SpectralSampling& spectralSampling();
 // Checks `s` as Radiance does (Error "-cs N: …" for fewer than 3 or more than Spectrum::kMaxChannels
