@@ -297,10 +297,12 @@ TEST(DaymtxCli, DaymetricsWritesPerSensorAndGridMetrics) {
 }
 
 // The metrics over the plan of the sensors: one picture a metric, each sensor's cell its value; the sun's hours
-// with -direct. Refused: -maps without -pts, and sensors that do not match the matrix (stdout and maps empty).
+// with -direct. Refused: -maps without -pts, sensors that do not match the matrix, a bad or missing sensor file
+// (stdout and maps empty).
 TEST(DaymtxCli, DaymetricsDrawsEachMetricOverThePlan) {
     fs::path scratch = brume_test::scratchDir("daymetrics_maps");
     std::ofstream(scratch / "grid.pts") << "2 3 0.75 0 0 1\n3 3 0.75 0 0 1\n";
+    std::ofstream(scratch / "bad.pts") << "2 3 0.75 0 0 1\n3 3 x 0 0 1\n";
     std::ofstream(scratch / "three.pts") << "2 3 0.75 0 0 1\n3 3 0.75 0 0 1\n4 3 0.75 0 0 1\n";
     writeSensorYear(scratch);
     Output r = runIn(scratch, "daymetrics -hours hours.txt -schedule schedule.txt -direct sun.mtx -pts grid.pts -maps plan ill.mtx");
@@ -320,7 +322,9 @@ TEST(DaymtxCli, DaymetricsDrawsEachMetricOverThePlan) {
         EXPECT_TRUE(fs::exists(scratch / ("plan_" + std::string(metric) + ".hdr"))) << metric;
     expectRefused(scratch, {{"daymetrics -hours hours.txt -maps refused ill.mtx", "daymetrics: -maps and -pts go together"},
                             {"daymetrics -hours hours.txt -pts three.pts -maps refused ill.mtx",
-                             "daymetrics: three.pts: 3 sensors for a matrix of 2"}});
+                             "daymetrics: three.pts: 3 sensors for a matrix of 2"},
+                            {"daymetrics -hours hours.txt -pts bad.pts -maps refused ill.mtx", "daymetrics: bad.pts:2: "},
+                            {"daymetrics -hours hours.txt -pts none.pts -maps refused ill.mtx", "daymetrics: cannot open 'none.pts'"}});
     EXPECT_FALSE(fs::exists(scratch / "refused_da.hdr"));
 }
 
