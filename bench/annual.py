@@ -16,8 +16,9 @@ and the worst sensor's DA (points). Radiance's runs are kept in bench/results/an
 annual_brume.json (the table shows every case run so far); --radiance DIR runs Radiance's again with its programs
 in DIR. Brume's ladders run the same command lines with Brume's programs
 (build/bin) and -n 1 (one thread), each rung twice with different seeds (the RMS of the two, and their CPU
-mean); with --radiance the two programs' rungs alternate, so that the machine's drift in speed falls on both. The
-goal is 2 % in a tenth of Radiance's cheapest rung within 2 %.
+mean), at its defaults (shared bounces, rcontrib's -aS) and with -aS 0 (each first bounce its own path, as in
+Radiance); with --radiance the two programs' rungs alternate, so that the machine's drift in speed falls on both.
+The goal is 2 % in a tenth of Radiance's cheapest rung within 2 %.
 
     python3 bench/annual.py [--radiance /tmp/radiance/inst/bin] [--cases office,office_m2,deepplan]
     python3 bench/annual.py --reference CASE --radiance DIR     # a case's converged reference, one run
@@ -61,20 +62,26 @@ class Case:
 
 
 def rungs(*specs):
-    return [HONEYBEE] + [["-ab", ab, "-ad", ad, "-lw", lw] for ab, ad, lw in specs]
+    """Honeybee's rung, then one per (ab, ad, lw[, more options])."""
+    return [HONEYBEE] + [["-ab", ab, "-ad", ad, "-lw", lw] + list(more) for ab, ad, lw, *more in specs]
+
+
+UNSHARED = "-aS", "0"  # Brume with each first bounce's own path, Radiance's estimator
 
 
 CASES = [
     Case("office", "office (192 sensors)", "office.rad", "grid.pts", 192, 1,
          rungs(("5", "10000", "2e-5"), ("7", "10000", "1e-6"), ("7", "20000", "1e-6"), ("10", "20000", "1e-6")),
-         rungs(("7", "512", "1e-5"), ("7", "1024", "1e-5"), ("7", "2048", "1e-5"), ("7", "4096", "1e-5"),
-               ("10", "1024", "1e-5"), ("10", "1536", "1e-5"), ("10", "2048", "1e-5"))),
+         rungs(("10", "256", "1e-5"), ("10", "512", "1e-5"), ("10", "1024", "1e-5"), ("10", "2048", "1e-5"),
+               ("10", "1024", "1e-5", *UNSHARED), ("10", "1536", "1e-5", *UNSHARED), ("10", "2048", "1e-5", *UNSHARED))),
     Case("office_m2", "office (192 sensors)", "office.rad", "grid.pts", 192, 2,
          rungs(("7", "10000", "1e-6"), ("7", "20000", "1e-6")),
-         rungs(("10", "1024", "1e-5"), ("10", "1536", "1e-5"), ("10", "2048", "1e-5"))),
+         rungs(("10", "256", "1e-5"), ("10", "512", "1e-5"), ("10", "1024", "1e-5"),
+               ("10", "1536", "1e-5", *UNSHARED), ("10", "2048", "1e-5", *UNSHARED))),
     Case("deepplan", "deep plan (416 sensors)", "deepplan.rad", "grid_B.pts", 416, 1,
          rungs(("7", "10000", "1e-6"), ("7", "20000", "1e-6")),
-         rungs(("10", "1024", "1e-5"), ("10", "2048", "1e-5"), ("10", "3072", "1e-5"), ("10", "4096", "1e-5"))),
+         rungs(("10", "256", "1e-5"), ("10", "512", "1e-5"), ("10", "1024", "1e-5"), ("10", "2048", "1e-5"),
+               ("10", "2048", "1e-5", *UNSHARED), ("10", "3072", "1e-5", *UNSHARED))),
 ]
 
 

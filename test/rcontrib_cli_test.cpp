@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -168,6 +169,35 @@ TEST(RcontribCli, SameRecordsOnAnyNumberOfThreads) {
     Output one = c.run("-n 1 " + args), two = c.run("-n 2 " + args);
     ASSERT_EQ(one.status, 0) << one.err;
     EXPECT_EQ(one.out.substr(one.out.find("\n\n")), two.out.substr(two.out.find("\n\n")));
+}
+
+// Shared bounces (-aS, on by default) hand each first bounce's continuation to its cell: what the paths carry
+// must survive the hand-over. Sensors facing down over a wide grey ground (diffuse reflectance 0.5) under an
+// open sky of radiance 2: every first bounce is on the ground, and every continuation escapes to the sky, so
+// each sensor's coefficients sum to 0.5π whatever the sampling (its sky bins, float rounding: 1e-4), and its
+// contributions (-V) to π, with and without sharing, one ray a record or the mean of two (-c 2); the bins
+// alone differ with the sampling, and sharing changes them (the cells' rays are not the points' own).
+TEST(RcontribCli, SharedBouncesKeepWhatThePathsCarry) {
+    std::string rays;
+    for (int i = 0; i < 24; ++i) rays += std::to_string(0.3 * i) + " " + std::to_string(0.1 * (i % 5)) + " 1 0 0 -1\n";
+    Case c("shared", openSky(2) + "grey polygon ground 0 0 12 -1e4 -1e4 0 1e4 -1e4 0 1e4 1e4 0 -1e4 1e4 0\n", rays);
+    std::map<std::string, std::string> outs;
+    for (std::string options : {"", "-aS 0", "-c 2", "-V", "-aS 0.5 -ab 4"}) {
+        Output o = c.run("-u- -I -ab 2 -ad 64 " + options + " " + kReinhart + " -m sky_glow -m ground_glow");
+        ASSERT_EQ(o.status, 0) << options << ": " << o.err;
+        auto r = rows(o.out);
+        ASSERT_EQ(r.size(), options == "-c 2" ? 12u : 24u) << options;
+        for (const auto& row : r) {
+            ASSERT_EQ(row.size(), 2u * 3 * 146) << options;  // each glow's 146 bins (reinhart.cal's 0: below)
+            EXPECT_NEAR(sumOfFirstComponents(row, 0, 146), options == "-V" ? kPi : kPi / 2, 1e-4) << options;
+            EXPECT_NEAR(sumOfFirstComponents(row, 146, 292), 0, 1e-6) << options;  // hidden by the ground
+        }
+        outs[options] = o.out;
+    }
+    EXPECT_NE(outs[""], outs["-aS 0"]);
+    Output bad = c.run("-I -aS 2 -ab 2 -m sky_glow");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.err.find("-aS: a fraction from 0 to 1 is expected"), std::string::npos) << bad.err;
 }
 
 TEST(RcontribCli, FilesPerModifierAndPerBin) {
@@ -335,19 +365,12 @@ TEST(RfluxmtxCli, BadReceiversAreNamed) {
 // Honeybee's 2-phase annual run (rfluxmtx with its sky.dome, rmtxop times gendaymtx's sky, to lux) on 16 sensors
 // of bench/annual's office under Chicago's year, against Radiance's converged reference (ten runs at -ab 10
 // -ad 50000, its own error 0.18 %). At -ab 7 -ad 2048 Brume's sensors spread about 1.6 % RMS from run to run
-// (bench/annual.py) and -ab 7 leaves out about 0.1 %: each sensor within 8 % (five times that), their mean
-// within 2 %.
+// with each first bounce's own path (-aS 0, Radiance's estimator), 0.8 % with shared bounces (the default;
+// bench/annual.py), and -ab 7 leaves out about 0.1 %: each sensor within 8 % (five times the larger), their
+// mean within 2 %, both ways.
 TEST(RfluxmtxCli, AYearInASideLitOfficeAgreesWithRadiance) {
     fs::path dir = brume_test::scratchDir("rcontrib_office");
     fs::copy_file(kData / "sky.rad", dir / "sky.dome", fs::copy_options::overwrite_existing);
-    std::string line =
-        "epw2wea '" + (kWeather / "chicago.epw").string() + "' chicago.wea && gendaymtx -m 1 -of chicago.wea > sky.smx && "
-        "rfluxmtx -u- -I -aa 0.0 -ab 7 -ad 2048 -c 1 -faf -lw 1e-5 -y 16 - sky.dome '" + (kData / "materials.rad").string() +
-        "' '" + (kData / "office.rad").string() + "' < '" + (kData / "grid16.pts").string() +
-        "' | rmtxop -fa - sky.smx -c 47.4 119.9 11.6";
-    Output o = brume_test::runBrume(line, dir);
-    ASSERT_EQ(o.status, 0) << o.err;
-    std::vector<double> brume = rowMeans(o.out);
     std::vector<double> reference;
     std::ifstream in(kData / "office_reference.txt");
     for (std::string l; std::getline(in, l);) {
@@ -357,15 +380,25 @@ TEST(RfluxmtxCli, AYearInASideLitOfficeAgreesWithRadiance) {
         w >> x >> y >> z >> lux;
         reference.push_back(lux);
     }
-    ASSERT_EQ(brume.size(), 16u);
     ASSERT_EQ(reference.size(), 16u);
-    double meanError = 0;
-    for (size_t i = 0; i < 16; ++i) {
-        double e = brume[i] / reference[i] - 1;
-        EXPECT_LT(std::abs(e), 0.08) << "sensor " << i << ": " << brume[i] << " lx, Radiance " << reference[i];
-        meanError += e / 16;
+    for (std::string sharing : {"", "-aS 0 "}) {
+        std::string line =
+            "epw2wea '" + (kWeather / "chicago.epw").string() + "' chicago.wea && gendaymtx -m 1 -of chicago.wea > sky.smx && "
+            "rfluxmtx -u- -I -aa 0.0 -ab 7 -ad 2048 -c 1 -faf -lw 1e-5 " + sharing + "-y 16 - sky.dome '" +
+            (kData / "materials.rad").string() + "' '" + (kData / "office.rad").string() + "' < '" +
+            (kData / "grid16.pts").string() + "' | rmtxop -fa - sky.smx -c 47.4 119.9 11.6";
+        Output o = brume_test::runBrume(line, dir);
+        ASSERT_EQ(o.status, 0) << o.err;
+        std::vector<double> brume = rowMeans(o.out);
+        ASSERT_EQ(brume.size(), 16u);
+        double meanError = 0;
+        for (size_t i = 0; i < 16; ++i) {
+            double e = brume[i] / reference[i] - 1;
+            EXPECT_LT(std::abs(e), 0.08) << sharing << "sensor " << i << ": " << brume[i] << " lx, Radiance " << reference[i];
+            meanError += e / 16;
+        }
+        EXPECT_LT(std::abs(meanError), 0.02) << sharing << meanError;
     }
-    EXPECT_LT(std::abs(meanError), 0.02) << meanError;
 }
 
 }  // namespace

@@ -18,6 +18,9 @@ struct ContributionRun {
     RenderSettings render;
     bool irradiance = false, irradianceAtHit = false, header = true, values = false, overwrite = false;
     int accumulate = 1, xres = 0, yres = 0;
+    // -aS: first bounces within this fraction of their distance from the query share their continuations
+    // (shared_bounces.h); 0: each its own path, as Radiance's.
+    double shareBounces = 0.125;
     char inFormat = 'a', outFormat = 'a';
     std::vector<CalDefinition> definitions;
     std::vector<ModifierRequest> modifiers;

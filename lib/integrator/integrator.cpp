@@ -64,8 +64,10 @@ PathContext Integrator::contextFor(const RayQuery& q, WorkItem& item, RayOutputs
     // Records and media do not carry throughput: they would leave contributions out.
     if (item.contributions && (item.visit || media_.present()))
         throw Error("contributions are not told through the irradiance cache or participating media");
-    return PathContext{Random(seedFor(q.index), q.index), item.scratch, q.time, media_.smokeAt(q.time), item.visit,
-                       &outputs, item.contributions};
+    PathContext ctx{Random(seedFor(q.index), q.index), item.scratch, q.time, media_.smokeAt(q.time), item.visit,
+                    &outputs, item.contributions};
+    if (item.contributions) ctx.bounces = item.bounces;
+    return ctx;
 }
 
 namespace {
@@ -143,6 +145,18 @@ RayRecord Integrator::irradianceAtHit(const RayQuery& q, WorkItem& item, RayTree
         ray = Ray{hit->point, ray.dir, std::numeric_limits<double>::infinity(), hit->surface};
     }
     return rec;
+}
+
+Spectrum Integrator::continueBounce(const DeferredBounce& bounce, const dvec3& dir, double time, double weightScale,
+                                    uint64_t index, WorkItem& item) const {
+    RayOutputs outputs(nullptr);
+    WorkItem told{item.scratch, nullptr, item.contributions};
+    PathContext ctx = contextFor(RayQuery{bounce.point, dir, index, time}, told, outputs);
+    const Spectrum one(1.f);
+    PathState state = surfaces_.continuationOf(bounce);
+    state.weight *= weightScale;
+    if (ctx.contributions) state.throughput = &one;
+    return radiance(Ray{bounce.point, dir, std::numeric_limits<double>::infinity(), bounce.surface}, state, ctx, nullptr);
 }
 
 // Irradiance as Radiance computes it for -I and -i: the value of a white Lambertian sensor of reflectance π

@@ -13,6 +13,7 @@
 #include "cache/surface_cache.h"
 #include "integrator/cache_client.h"
 #include "integrator/contributions.h"
+#include "integrator/deferred_bounces.h"
 #include "integrator/hit_shading.h"
 #include "integrator/light_sampler.h"
 #include "integrator/media.h"
@@ -42,6 +43,7 @@ struct WorkItem {
     Scratch& scratch;
     CacheVisit* visit = nullptr;
     ContributionSink* contributions = nullptr;
+    BounceSink* bounces = nullptr;  // with contributions: where first bounces defer their continuations
 };
 
 class Integrator final : public Tracer {
@@ -63,6 +65,11 @@ public:
     // Irradiance at the first opaque surface the ray meets; light sources give their radiance (rtrace -i).
     RayRecord irradianceAtHit(const RayQuery& q, WorkItem& item, RayTree* tree = nullptr) const;
 
+    // The radiance the continuation of a deferred bounce brings back along unit `dir` (in its hemisphere), its
+    // sources' contributions told to item.contributions; `weightScale` multiplies its weight (the bounces it
+    // stands for), `index` seeds its samples.
+    Spectrum continueBounce(const DeferredBounce& bounce, const dvec3& dir, double time, double weightScale,
+                            uint64_t index, WorkItem& item) const;
     // ∫K of every medium on the straight line from `from` to `to` (the global one, the mists around `from`, the
     // smoke at `time`, a prepared instant), surfaces ignored and exact, K each medium's as a study quotes one
     // number (QuotedExtinction): the optical depth of a line of sight, for Jin's law.

@@ -12,6 +12,7 @@
 namespace brume {
 
 class ContributionSink;
+class BounceSink;
 
 struct PathContext {
     Random rng;
@@ -21,6 +22,7 @@ struct PathContext {
     CacheVisit* visit = nullptr;      // null: no cache lookups (paths sample what records would give)
     RayOutputs* outputs = nullptr;    // null: nobody asks for rtrace's outputs
     ContributionSink* contributions = nullptr;  // null: nobody asks which source brings what (contributions.h)
+    BounceSink* bounces = nullptr;  // non-null: first bounces hand their continuations there (deferred_bounces.h)
 
     // The outputs, where the record of the ray being traced is asked for (else null).
     RayOutputs* recording() const { return outputs && outputs->record() ? outputs : nullptr; }

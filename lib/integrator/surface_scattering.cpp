@@ -121,21 +121,53 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
         aimingFrom(child, sh.point, normal, count, portals_.active());
         Spectrum throughput;
         carryThroughput(state, child, coef * float(boost / count), throughput);
-        Frame frame(normal);
-        uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
         Spectrum paths(0.f);
-        for (int i = 0; i < count; ++i) {
-            double u, v;
-            sobol2D(i, scramble, u, v);
-            paths += tracer_.radiance(Ray{sh.point, frame.toWorld(cosineHemisphere(u, v)),
-                                          std::numeric_limits<double>::infinity(), surface},
-                                      child, ctx, nullptr);
-        }
+        if (deferring(state, beyond, ctx))
+            ctx.bounces->defer(DeferredBounce{sh.point, glm::vec3(normal), surface, scene_.surfaceObject(surface),
+                                              float(glm::length(sh.point - state.from)), float(child.weight),
+                                              int16_t(child.reflections), int16_t(child.depth)},
+                               throughput);
+        else
+            paths += cosinePaths(sh.point, normal, surface, count, child, ctx);
         if (portals_.active()) paths += portals_.sample(sh.point, normal, surface, count, child, ctx);
         if (patches_.active()) paths += patches_.sample(sh.point, normal, surface, count, child, ctx);
         sum += coef * paths * float(boost / count);
     }
     return sum;
+}
+
+// A first bounce of a path from a query whose contributions are collected hands its continuation to the
+// bounce sink, if the run gave one; not from inside closed volumes (antimatter), which a continuation
+// starting afresh would not know.
+bool SurfaceScattering::deferring(const PathState& state, bool beyond, const PathContext& ctx) const {
+    return ctx.bounces && state.throughput && state.ambientLevel == 1 && !beyond && state.clips.count == 0 &&
+           state.mists.count == 0;
+}
+
+Spectrum SurfaceScattering::cosinePaths(const dvec3& point, const dvec3& normal, const SurfaceId& surface, int count,
+                                        const PathState& child, PathContext& ctx) const {
+    Frame frame(normal);
+    uint64_t scramble = (uint64_t(ctx.rng.next()) << 32) | ctx.rng.next();
+    Spectrum paths(0.f);
+    for (int i = 0; i < count; ++i) {
+        double u, v;
+        sobol2D(i, scramble, u, v);
+        paths += tracer_.radiance(Ray{point, frame.toWorld(cosineHemisphere(u, v)), std::numeric_limits<double>::infinity(),
+                                      surface},
+                                  child, ctx, nullptr);
+    }
+    return paths;
+}
+
+PathState SurfaceScattering::continuationOf(const DeferredBounce& bounce) const {
+    PathState state;
+    state.kind = PathState::Kind::Sampled;
+    state.ambientLevel = 2;
+    state.weight = bounce.weight;
+    state.reflections = bounce.reflections;
+    state.depth = bounce.depth;
+    aimingFrom(state, bounce.point, dvec3(bounce.normal), 1, portals_.active());
+    return state;
 }
 
 }  // namespace brume

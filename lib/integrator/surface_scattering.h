@@ -3,6 +3,7 @@
 // next-event estimation), and diffuse interreflection from the irradiance cache or by paths.
 #pragma once
 #include "integrator/cache_client.h"
+#include "integrator/deferred_bounces.h"
 #include "integrator/light_sampler.h"
 #include "integrator/sky_portals.h"
 #include "integrator/sun_patches.h"
@@ -23,7 +24,13 @@ public:
     Spectrum shade(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                    PathContext& ctx, Spectrum* sourceShare) const;
 
+    // The state of a deferred bounce's continuation (as ambient() makes it for a first bounce's ray).
+    PathState continuationOf(const DeferredBounce& bounce) const;
+
 private:
+    bool deferring(const PathState& state, bool beyond, const PathContext& ctx) const;
+    Spectrum cosinePaths(const dvec3& point, const dvec3& normal, const SurfaceId& surface, int count,
+                         const PathState& child, PathContext& ctx) const;
     Spectrum glossy(const Shading& sh, const Lobes& lobes, const SurfaceId& surface, const PathState& state,
                     PathContext& ctx) const;
     Spectrum general(const Shading& sh, const GeneralLobe& lobe, const SurfaceId& surface, const PathState& state,
