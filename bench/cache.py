@@ -110,7 +110,9 @@ class Part:
         exe, scene, _ = self.progs[prog]
         n = ["-n", "1"] if prog == "brume" else []  # Radiance's rpict has no -n; one thread both ways
         if self.name == "grid":
-            return [exe] + GRID_COMMON + opts + n + [scene]
+            # Brume's sensors take the cache's records only with -aS 0 (else they share bounces, rtrace(1)):
+            # this bench is the cache's.
+            return [exe] + GRID_COMMON + opts + n + (["-aS", "0"] if prog == "brume" else []) + [scene]
         return [exe] + rpict.VIEWS[VIEW][1] + IMAGE_COMMON + opts + n + [scene]
 
     def run(self, prog, opts, check=True):

@@ -2,10 +2,11 @@
 """One instant on a sensor grid (issue 40's point-in-time goal: the worst sensor within 6 % at rtrace's
 defaults): bench/annual's office (192 sensors at 0.75 m) under three skies of Chicago, a clear June noon with its
 sun through the window, a clear December morning with a low sun deep in the room and an overcast sky, with
-`rtrace -I` at its defaults (the irradiance cache: -aa .1 -ad 1024 -ar 256) and the -ab a daylight study takes,
-against a converged reference: the mean of four path-traced runs (-aa 0 -ab 12 -ad 16384 -lw 1e-6, independent
-seeds), whose own standard error is printed. Each setting runs --runs times with independent seeds; the table
-gives each run's RMS, bias and worst sensor.
+`rtrace -I` at its defaults (-aa .1 -ad 1024: the sensors' own paths and shared bounces, -aS .125) and the -ab a
+daylight study takes, and with -aS 0 (the sensors take the irradiance cache's records, -ar 256), against a
+converged reference: the mean of four path-traced runs (-aa 0 -ab 12 -ad 16384 -lw 1e-6, independent seeds),
+whose own standard error is printed. Each setting runs --runs times with independent seeds; the table gives each
+run's RMS, bias and worst sensor.
 
     python3 bench/point_in_time.py [--runs 5] [--remake-reference]
 
@@ -41,7 +42,7 @@ TITLES = {"june": "clear June noon (sun 70° high)", "december": "clear December
           "overcast": "overcast (CIE, 100 W/m² diffuse)"}
 REFERENCE_OPTIONS = ["-ab", "12", "-aa", "0", "-ad", "16384", "-lw", "1e-6"]
 REFERENCE_RUNS = 4
-SETTINGS = [["-ab", "5"], ["-ab", "7"]]
+SETTINGS = [["-ab", "5"], ["-ab", "7"], ["-ab", "5", "-aS", "0"]]
 
 
 def rtrace(options, sky_path, threads, out_path=None):

@@ -1,15 +1,18 @@
 // rtrace: values along rays read from standard input, as Radiance's rtrace (see man/rtrace.1).
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "integrator/render_options.h"
 #include "io/ray_reader.h"
 #include "io/value_writer.h"
 #include "medium/smoke.h"
 #include "render/sequence.h"
+#include "render/shared_bounces.h"
 #include "scene/reader.h"
 #include "util/header.h"
 
@@ -25,6 +28,7 @@ struct Options {
     ColorOutput color;
     char inFormat = 'a', outFormat = 'a';
     int xres = 0, yres = 0;
+    double shareBounces = kShareBouncesDefault;  // -aS, for sensors (-I, -i)
 };
 
 OptionTable makeTable(Options& o) {
@@ -50,6 +54,7 @@ OptionTable makeTable(Options& o) {
         o.outputSpec = v;
     }, [&o] { return o.outputSpec; });
     addRenderOptions(t, o.render, o.irradianceAtHit);
+    addShareBouncesOption(t, o.shareBounces);
     addColorOutputOptions(t, o.color, true);
     t.addAttached("-ap", "photon maps (not supported)",
                   [](const std::string&) { throw Error("photon maps (-ap) are not supported by Brume"); });
@@ -103,7 +108,18 @@ int run(int argc, char** argv) {
     RayReader reader(std::cin, o.inFormat, "(stdin)");
     long limit = o.yres > 0 ? (o.xres > 1 ? long(o.xres) * o.yres : o.yres) : 0;
     long flushEvery = (o.yres == 0 || o.xres <= 1) ? o.xres : 0;
-    RayBatches batches(reader, flushEvery > 0 ? size_t(flushEvery) : kRayBatchSize, limit);
+    // Where the cache would serve them (-aa > 0), sensors share their bounces rather than look records up,
+    // unless a ray tree is asked for (the shared paths are no one sensor's) or a cache file (its records are
+    // what is asked for). -aa 0 stays path tracing, each sensor's paths its own.
+    std::optional<SharedBounces> shared;
+    size_t batchSize = kRayBatchSize;
+    if ((o.irradiance || o.irradianceAtHit) && o.shareBounces > 0 && o.render.usesCache() && !writer.tracing() &&
+        o.render.cacheFile.empty() && sharesBounces(renderScene, o.render)) {
+        int channels = Spectrum(0.f).size();
+        shared.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), channels, size_t(channels));
+        batchSize = std::clamp<size_t>(kSharedBouncesPerBatch / size_t(o.render.ambientDivisions), 1, batchSize);
+    }
+    RayBatches batches(reader, flushEvery > 0 ? size_t(flushEvery) : batchSize, limit);
     dvec3 lastOrg(0), lastDir(0);
     std::vector<InputRay> rays;
     std::vector<RayRecord> records;
@@ -112,7 +128,7 @@ int run(int argc, char** argv) {
         records.assign(rays.size(), RayRecord{});
         trees.assign(writer.tracing() ? rays.size() : 0, RayTree{{}, writer.tracesShadowRays()});
         uint64_t base = batches.first();
-        sequence.run(rays.size(), instant, [&](size_t i, WorkItem& item) {
+        auto trace = [&](size_t i, WorkItem& item) {
             const InputRay& in = rays[i];
             if (in.zero) return;
             RayTree* tree = trees.empty() ? nullptr : &trees[i];
@@ -120,7 +136,17 @@ int run(int argc, char** argv) {
             if (o.irradiance) records[i] = integrator.irradiance(q, item, tree);
             else if (o.irradianceAtHit) records[i] = integrator.irradianceAtHit(q, item, tree);
             else records[i] = integrator.trace(q, item, tree);
-        });
+        };
+        if (shared) {
+            shared->reset(rays.size());
+            sequence.runPaths(rays.size(), instant, [&](size_t i, WorkItem& item) {
+                WorkItem sharing{item.scratch, nullptr, nullptr, &shared->of(i)};
+                trace(i, sharing);
+            });
+            shared->resolveValues(sequence, integrator, instant, base, records);
+        } else {
+            sequence.run(rays.size(), instant, trace);
+        }
         for (size_t i = 0; i < rays.size(); ++i) {
             InputRay in = rays[i];
             if (in.zero) {

@@ -200,6 +200,38 @@ TEST(RcontribCli, SharedBouncesKeepWhatThePathsCarry) {
     EXPECT_NE(bad.err.find("-aS: a fraction from 0 to 1 is expected"), std::string::npos) << bad.err;
 }
 
+// rtrace's sensors share bounces as rcontrib's do (-aS, on by default): the same cells, seeds and paths, so a
+// sensor's contributions (-V) over every source of a daylit office sum to rtrace's value of it, to float
+// rounding (1e-4 relative; a few thousand terms), on any number of threads, given rtrace rcontrib's -dt 0 and
+// no bounces past -ab (-al+); with -aS 0 rtrace's sensors take the cache's records.
+TEST(RcontribCli, SensorsContributionsSumToRtracesSharedValue) {
+    fs::path dir = brume_test::scratchDir("rcontrib_rtrace_shared");
+    std::ofstream(dir / "sky.rad") << "!gendaylit 6 21 12.5 -a 41.98 -o 87.92 -m 90 -W 800 100\n"
+                                      "skyfunc glow skyglow 0 0 4 1 1 1 0\nskyglow source sky 0 0 4 0 0 1 180\n"
+                                      "skyfunc glow groundglow 0 0 4 1 1 1 0\ngroundglow source ground 0 0 4 0 0 -1 180\n";
+    std::string scene = "'" + (kData / "materials.rad").string() + "' '" + (kData / "office.rad").string() + "' sky.rad < '" +
+                        (kData / "grid16.pts").string() + "'";
+    std::string options = "-u- -h -I -ab 3 -ad 256 ";
+    Output values = brume_test::runBrume("rtrace -n 2 -al+ -dt 0 " + options + scene, dir);
+    Output oneThread = brume_test::runBrume("rtrace -n 1 -al+ -dt 0 " + options + scene, dir);
+    Output cached = brume_test::runBrume("rtrace -n 2 -al+ -dt 0 -aS 0 " + options + scene, dir);
+    Output parts = brume_test::runBrume("rcontrib -n 2 -V " + options + "-m solar -m skyglow -m groundglow " + scene, dir);
+    ASSERT_EQ(values.status, 0) << values.err;
+    ASSERT_EQ(parts.status, 0) << parts.err;
+    EXPECT_EQ(values.out, oneThread.out);
+    EXPECT_NE(values.out, cached.out);
+    std::istringstream v(values.out), p(parts.out);
+    int sensors = 0;
+    for (std::string vl, pl; std::getline(v, vl) && std::getline(p, pl); ++sensors) {
+        std::istringstream vw(vl), pw(pl);
+        double value[3], sum[3] = {0, 0, 0}, x;
+        vw >> value[0] >> value[1] >> value[2];
+        for (int k = 0; pw >> x; ++k) sum[k % 3] += x;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], value[c], 1e-4 * value[c]) << "sensor " << sensors << " channel " << c;
+    }
+    EXPECT_EQ(sensors, 16);
+}
+
 TEST(RcontribCli, FilesPerModifierAndPerBin) {
     Case c("files", openSky(), "0 0 0 0 0 1\n0 0 0 1 0 0\n");
     Output o = c.run("-I -ab 1 -ad 64 -o o_%s.txt -b 'if(Dx,1,0)' -bn 2 -m sky_glow -m ground_glow");

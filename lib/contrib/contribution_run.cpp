@@ -8,9 +8,9 @@
 
 #include "contrib/contribution_output.h"
 #include "contrib/contribution_tally.h"
-#include "contrib/shared_bounces.h"
 #include "io/ray_reader.h"
 #include "render/sequence.h"
+#include "render/shared_bounces.h"
 #include "scene/reader.h"
 #include "spectrum/color_output.h"
 #include "util/error.h"
@@ -77,11 +77,7 @@ OptionTable contributionOptions(ContributionRun& o) {
     t.addBool("-h", o.header, "output header");
     t.addBool("-I", o.irradiance, "irradiance at the ray origin, the direction being the surface normal");
     t.addBool("-V", o.values, "contributions (coefficient times the source's radiance) rather than coefficients");
-    t.add("-aS", 1, "first bounces within this fraction of their distance share continuations (0: none)",
-          [&o](const auto& a) {
-              o.shareBounces = toReal("-aS", a[0]);
-              if (!(o.shareBounces >= 0 && o.shareBounces <= 1)) throw Error("-aS: a fraction from 0 to 1 is expected");
-          });
+    addShareBouncesOption(t, o.shareBounces);
     t.add("-c", 1, "rays accumulated (averaged) per record", [&o](const auto& a) {
         o.accumulate = toInt("-c", a[0]);
         if (o.accumulate < 1) throw Error("-c: Brume accumulates one ray or more per record (not -c 0)");
@@ -181,14 +177,22 @@ void runContributions(ContributionRun o, const std::vector<std::string>& sceneFi
     RecordSource source{reader, o.yres > 0 ? long(std::max(o.xres, 1)) * o.yres : 0};
     const size_t width = size_t(bins.columns()) * settings.channels;
     std::optional<SharedBounces> pool;
-    if (o.shareBounces > 0) pool.emplace(o.shareBounces, settings.channels);
+    if (o.shareBounces > 0) pool.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), settings.channels, width);
     size_t batch = std::clamp<size_t>((size_t(64) << 20) / (width * sizeof(double)), 1, kRayBatchSize);
     // Shared bounces keep each first bounce of a batch until its cells are traced.
     if (pool) batch = std::clamp<size_t>(kSharedBouncesPerBatch / (size_t(o.accumulate) * std::max(o.render.ambientDivisions, 1)), 1, batch);
+    // A cell's continuations, their contributions told to a tally.
+    SharedBounces::CellTracer cellTracer = [&](const std::vector<Continuation>& paths, WorkItem& item,
+                                               std::vector<double>& sums) {
+        ContributionTally& tally = tallies.local();
+        tally.clear();
+        WorkItem told{item.scratch, nullptr, &tally};
+        for (const Continuation& p : paths) integrator.continueBounce(*p.bounce, p.dir, instant, p.weightScale, p.index, told);
+        sums = tally.sums();
+    };
     std::vector<InputRay> rays;
     std::vector<std::vector<double>> records;
     uint64_t first = 0;
-    long ignored = 0;
     while (nextRecords(source, o.accumulate, batch, rays)) {
         size_t count = rays.size() / o.accumulate;
         records.assign(count, std::vector<double>(width, 0.0));
@@ -208,11 +212,12 @@ void runContributions(ContributionRun o, const std::vector<std::string>& sceneFi
             const std::vector<double>& sums = tally.sums();
             for (size_t c = 0; c < width; ++c) records[i][c] = sums[c] / o.accumulate;
         });
-        if (pool) ignored += pool->resolve(sequence, integrator, instant, first, bins, o.values, 1.0 / o.accumulate, records);
+        if (pool) pool->resolve(sequence, instant, first, cellTracer, 1.0 / o.accumulate, records);
         for (const std::vector<double>& r : records) output.write(r);
         output.flush();
         first += rays.size();
     }
+    long ignored = 0;
     for (const ContributionTally& t : tallies) ignored += t.outOfRange();
     if (ignored > 0) warn(std::to_string(ignored) + " contributions fell past their modifier's last bin and were ignored");
     output.finish();

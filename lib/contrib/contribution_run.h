@@ -9,6 +9,7 @@
 
 #include "contrib/modifier_bins.h"
 #include "integrator/render_options.h"
+#include "render/shared_bounces.h"
 #include "util/options.h"
 
 namespace brume {
@@ -20,7 +21,7 @@ struct ContributionRun {
     int accumulate = 1, xres = 0, yres = 0;
     // -aS: first bounces within this fraction of their distance from the query share their continuations
     // (shared_bounces.h); 0: each its own path, as Radiance's.
-    double shareBounces = 0.125;
+    double shareBounces = kShareBouncesDefault;
     char inFormat = 'a', outFormat = 'a';
     std::vector<CalDefinition> definitions;
     std::vector<ModifierRequest> modifiers;

@@ -62,18 +62,17 @@ double Integrator::primaryTmin(const dvec3& org) const {
 
 PathContext Integrator::contextFor(const RayQuery& q, WorkItem& item, RayOutputs& outputs) const {
     // Records and media do not carry throughput: they would leave contributions out.
-    if (item.contributions && (item.visit || media_.present()))
-        throw Error("contributions are not told through the irradiance cache or participating media");
-    PathContext ctx{Random(seedFor(q.index), q.index), item.scratch, q.time, media_.smokeAt(q.time), item.visit,
-                    &outputs, item.contributions};
-    if (item.contributions) ctx.bounces = item.bounces;
-    return ctx;
+    if ((item.contributions || item.bounces) && (item.visit || media_.present()))
+        throw Error("contributions and shared bounces are not told through the irradiance cache or participating media");
+    return PathContext{Random(seedFor(q.index), q.index), item.scratch, q.time, media_.smokeAt(q.time), item.visit,
+                       &outputs, item.contributions, item.bounces};
 }
 
 namespace {
-// The state a query's first ray starts with: where contributions are collected, a throughput of 1.
+// The state a query's first ray starts with: where contributions are collected or bounces deferred, a
+// throughput of 1.
 PathState rootOf(PathState start, const PathContext& ctx, const Spectrum& one) {
-    if (ctx.contributions) start.throughput = &one;
+    if (ctx.contributions || ctx.bounces) start.throughput = &one;
     return start;
 }
 }  // namespace

@@ -43,7 +43,7 @@ struct WorkItem {
     Scratch& scratch;
     CacheVisit* visit = nullptr;
     ContributionSink* contributions = nullptr;
-    BounceSink* bounces = nullptr;  // with contributions: where first bounces defer their continuations
+    BounceSink* bounces = nullptr;  // where first bounces defer their continuations (without the cache and media)
 };
 
 class Integrator final : public Tracer {

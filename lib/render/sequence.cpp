@@ -95,15 +95,17 @@ void Sequence::run(size_t count, double time, const std::function<void(size_t, W
     if (cacheFile_) cacheFile_->sync();
 }
 
-void Sequence::runPart(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item) {
+void Sequence::runPaths(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item) {
     moveTo(time);
-    if (!cache_) {
-        tbb::parallel_for(size_t(0), count, [&](size_t i) {
-            WorkItem work{scratch_.local()};
-            item(i, work);
-        });
-        return;
-    }
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+        WorkItem work{scratch_.local()};
+        item(i, work);
+    });
+}
+
+void Sequence::runPart(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item) {
+    if (!cache_) return runPaths(count, time, item);
+    moveTo(time);
     std::vector<size_t> pending(count);
     std::iota(pending.begin(), pending.end(), size_t(0));
     for (int pass = 0; !pending.empty(); ++pass) {

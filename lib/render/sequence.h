@@ -44,6 +44,9 @@ public:
     // The same for a part of a larger piece of work (a picture's band of rows), whose records go to the -af
     // file when the whole is done.
     void runPart(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item);
+    // Runs work items without the cache, each sampling its paths itself (shared bounces: records would not
+    // carry their throughputs).
+    void runPaths(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item);
     // A frame's picture. Each frame's passes are numbered from the first, as if it were alone: its records
     // are seeded by where its pixels lie, not by the frames before it.
     RenderedPicture render(const SequenceFrame& frame, const PictureSettings& settings, ProgressMeter* progress);
