@@ -116,7 +116,8 @@ int run(int argc, char** argv) {
     if ((o.irradiance || o.irradianceAtHit) && o.shareBounces > 0 && o.render.usesCache() && !writer.tracing() &&
         o.render.cacheFile.empty() && sharesBounces(renderScene, o.render)) {
         int channels = Spectrum(0.f).size();
-        shared.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), channels, size_t(channels));
+        shared.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), channels, size_t(channels),
+                       renderScene.geometry().origin());
         batchSize = std::clamp<size_t>(kSharedBouncesPerBatch / size_t(o.render.ambientDivisions), 1, batchSize);
     }
     RayBatches batches(reader, flushEvery > 0 ? size_t(flushEvery) : batchSize, limit);

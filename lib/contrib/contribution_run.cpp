@@ -177,7 +177,9 @@ void runContributions(ContributionRun o, const std::vector<std::string>& sceneFi
     RecordSource source{reader, o.yres > 0 ? long(std::max(o.xres, 1)) * o.yres : 0};
     const size_t width = size_t(bins.columns()) * settings.channels;
     std::optional<SharedBounces> pool;
-    if (o.shareBounces > 0) pool.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), settings.channels, width);
+    if (o.shareBounces > 0)
+        pool.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), settings.channels, width,
+                     renderScene.geometry().origin());
     size_t batch = std::clamp<size_t>((size_t(64) << 20) / (width * sizeof(double)), 1, kRayBatchSize);
     // Shared bounces keep each first bounce of a batch until its cells are traced.
     if (pool) batch = std::clamp<size_t>(kSharedBouncesPerBatch / (size_t(o.accumulate) * std::max(o.render.ambientDivisions, 1)), 1, batch);

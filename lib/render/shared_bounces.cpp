@@ -17,7 +17,10 @@ namespace brume {
 
 namespace {
 constexpr int kNormalDivisions = 8;  // per face of the cube of normals: cells of ≈ 11°
-}
+// Cubes start this fraction of their side off the origin's multiples: walls and floors lie at round distances from
+// the origin, and on a cube's face rounding (at a site's coordinates) would tip their hits from cube to cube.
+constexpr double kCubePhase = 0.3819660112501051;  // 2 − φ
+}  // namespace
 
 void addShareBouncesOption(OptionTable& table, double& fraction) {
     table.add("-aS", 1, "first bounces within this fraction of their distance share continuations (0: none)",
@@ -35,8 +38,8 @@ bool sharesBounces(const RenderScene& scene, const RenderSettings& settings) {
 
 int continuationsPerCell(int ambientDivisions) { return std::max(32, ambientDivisions / 32); }
 
-SharedBounces::SharedBounces(double relativeSize, int perCell, int channels, size_t width)
-    : relativeSize_(relativeSize), perCell_(perCell), channels_(channels), width_(width) {}
+SharedBounces::SharedBounces(double relativeSize, int perCell, int channels, size_t width, const dvec3& origin)
+    : relativeSize_(relativeSize), perCell_(perCell), channels_(channels), width_(width), origin_(origin) {}
 
 void SharedBounces::reset(size_t records) {
     records_.assign(records, Record{});
@@ -58,8 +61,9 @@ SharedBounces::Key SharedBounces::keyOf(const DeferredBounce& b) const {
     int face = 2 * axis + (n[axis] < 0);
     int normal = (face * kNormalDivisions + cell(n[(axis + 1) % 3])) * kNormalDivisions + cell(n[(axis + 2) % 3]);
     int level = std::ilogb(std::max(double(b.distance) * relativeSize_, 1e-30));
-    auto at = [&](double c) { return int(std::clamp(std::floor(std::ldexp(c, -level)), -2e9, 2e9)); };
-    return Key{b.object, level, at(b.point.x), at(b.point.y), at(b.point.z), normal};
+    auto at = [&](double c) { return int(std::clamp(std::floor(std::ldexp(c, -level) + kCubePhase), -2e9, 2e9)); };
+    dvec3 p = b.point - origin_;
+    return Key{b.object, level, at(p.x), at(p.y), at(p.z), normal};
 }
 
 void SharedBounces::Record::defer(const DeferredBounce& bounce, const Spectrum& throughput) {

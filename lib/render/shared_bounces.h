@@ -58,7 +58,9 @@ public:
 
     // `width`: the numbers a record sums (rcontrib: bins × channels; rtrace: channels); the throughputs
     // have `channels` components, the w-th number taking the (w mod channels)-th.
-    SharedBounces(double relativeSize, int perCell, int channels, size_t width);
+    // `origin`: where the cells' cubes are counted from (the scene's, SceneGeometry::origin), so that a model at
+    // its site's coordinates has the cells it has at (0, 0, 0).
+    SharedBounces(double relativeSize, int perCell, int channels, size_t width, const dvec3& origin);
 
     // Forgets the last batch; sinks for `records` records.
     void reset(size_t records);
@@ -101,6 +103,7 @@ private:
     double relativeSize_;
     int perCell_, channels_;
     size_t width_;
+    dvec3 origin_;
     std::vector<Record> records_;
 };
 
