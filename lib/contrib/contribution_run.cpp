@@ -182,7 +182,10 @@ void runContributions(ContributionRun o, const std::vector<std::string>& sceneFi
                      renderScene.geometry().origin());
     size_t batch = std::clamp<size_t>((size_t(64) << 20) / (width * sizeof(double)), 1, kRayBatchSize);
     // Shared bounces keep each first bounce of a batch until its cells are traced.
-    if (pool) batch = std::clamp<size_t>(kSharedBouncesPerBatch / (size_t(o.accumulate) * std::max(o.render.ambientDivisions, 1)), 1, batch);
+    if (pool) {
+        size_t bouncesPerRecord = size_t(o.accumulate) * size_t(std::max(o.render.ambientDivisions, 1));
+        batch = std::clamp<size_t>(kSharedBouncesPerBatch / bouncesPerRecord, 1, batch);
+    }
     // A cell's continuations, their contributions told to a tally.
     SharedBounces::CellTracer cellTracer = [&](const std::vector<Continuation>& paths, WorkItem& item,
                                                std::vector<double>& sums) {

@@ -1,8 +1,8 @@
 // Bounces whose diffuse continuation is left to someone else. A sensor's -ad rays meet surfaces whose light
 // from the rest of the scene (bounces past the first) is smooth: where a run pools those continuations
-// between nearby hits (rcontrib's shared bounces, lib/contrib/shared_bounces.h), the first hit of each ray
-// still gathers its own direct light, sky through windows and sun patches, but hands its cosine-distributed
-// continuation to a BounceSink with the throughput that continuation's radiance would carry.
+// between nearby hits (shared bounces, lib/render/shared_bounces.h: rcontrib's, rtrace's sensors'), the first
+// hit of each ray still gathers its own direct light, sky through windows and sun patches, but hands its
+// cosine-distributed continuation to a BounceSink with the throughput that continuation's radiance would carry.
 #pragma once
 #include <cstdint>
 

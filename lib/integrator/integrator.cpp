@@ -61,7 +61,7 @@ double Integrator::primaryTmin(const dvec3& org) const {
 }
 
 PathContext Integrator::contextFor(const RayQuery& q, WorkItem& item, RayOutputs& outputs) const {
-    // Records and media do not carry throughput: they would leave contributions out.
+    // Records and media do not carry throughput: they would leave contributions and deferred bounces out.
     if ((item.contributions || item.bounces) && (item.visit || media_.present()))
         throw Error("contributions and shared bounces are not told through the irradiance cache or participating media");
     return PathContext{Random(seedFor(q.index), q.index), item.scratch, q.time, media_.smokeAt(q.time), item.visit,

@@ -136,9 +136,9 @@ Spectrum SurfaceScattering::ambient(const Shading& sh, const Lobes& lobes, const
     return sum;
 }
 
-// A first bounce of a path from a query whose contributions are collected hands its continuation to the
-// bounce sink, if the run gave one; not from inside closed volumes (antimatter), which a continuation
-// starting afresh would not know.
+// A first bounce hands its continuation to the bounce sink where the run gave one (its path carrying its
+// throughput); not from inside closed volumes (antimatter, mists), which a continuation starting afresh would
+// not know.
 bool SurfaceScattering::deferring(const PathState& state, bool beyond, const PathContext& ctx) const {
     return ctx.bounces && state.throughput && state.ambientLevel == 1 && !beyond && state.clips.count == 0 &&
            state.mists.count == 0;
