@@ -56,15 +56,19 @@ REF_OPTIONS = ["-I", "-h", "-ab", "50", "-aa", "0", "-ad", "65536", "-as", "0", 
 REF_RUNS = 4
 
 COMMON = ["-I", "-h"]
-# (family, label, program, rungs). Brume's path tracing with every bounce, as the reference, ended by roulette at
+# (family, label, program, rungs). Brume's sensors at -aa > 0 send their own paths and share the bounces past the
+# first (rtrace's -aS, the defaults); its cache serves them with -aS 0. Brume's path tracing with every bounce, as the reference, ended by roulette at
 # its default -lw (each path's weight is its share of the sensor's value, as in Radiance); its cache's paths
 # go on past -ab by roulette too. Radiance's -ab 7 leaves out about 0.3 % of the light in these rooms. Radiance's
 # path tracing without -as: its super-samples, placed where the first samples differ most, bias it low by 5-15 %
 # in side-lit rooms (its cache takes them, as users run it, and once without).
 FAMILIES = [
     ("brume-default", "Brume defaults (-ab 5)", "brume", [["-ab", "5"]]),
-    ("brume-cache", "Brume cache", "brume",
-     [["-ab", "5", "-aa", aa, "-ad", ad] for aa, ad in ((".3", "256"), (".2", "512"), (".1", "1024"), (".05", "2048"))]),
+    ("brume-shared", "Brume's sensors' own paths, shared bounces (the defaults' sampling)", "brume",
+     [["-ab", "5", "-ad", str(n)] for n in (256, 512, 1024, 2048, 4096)]),
+    ("brume-cache", "Brume cache (-aS 0)", "brume",
+     [["-ab", "5", "-aa", aa, "-ad", ad, "-aS", "0"]
+      for aa, ad in ((".3", "256"), (".2", "512"), (".1", "1024"), (".05", "2048"))]),
     ("brume-pt", "Brume path tracing", "brume",
      [["-ab", "50", "-aa", "0", "-ad", str(n)] for n in (64, 256, 1024, 4096)]),
     ("brume-pt-rays", "Brume path tracing, sky by rays only (-aP-)", "brume",
@@ -210,7 +214,7 @@ def summary(scene, rows):
         reach[name] = time_to(rs, TARGET_RMS)
         lines.append("    %-16s %s" % (name, "%.2f s" % reach[name] if reach[name] else "not reached"))
     rad = [reach[f] for f in ("radiance-cache", "radiance-pt") if reach.get(f)]
-    brume = [reach[f] for f in ("brume-default", "brume-cache", "brume-pt") if reach.get(f)]
+    brume = [reach[f] for f in ("brume-default", "brume-shared", "brume-cache", "brume-pt") if reach.get(f)]
     if rad and brume:
         lines.append("    Radiance's cheapest / Brume's cheapest: %.1fx (goal: 10x)" % (min(rad) / min(brume)))
     return "\n".join(lines)
@@ -241,7 +245,7 @@ for ax, scene in zip(axes.flat, scenes):
         rs = sorted(rs, key=lambda r: r[3])
         k = names.index(name)
         ax.loglog([r[3] for r in rs], [r[4] for r in rs], "-" if name.startswith("brume") else "--",
-                  marker="*osDv^"[k], color="C%d" % k, label=rs[0][1])
+                  marker="*osDv^p"[k], color="C%d" % k, label=rs[0][1])
     ax.axhline(d["noise"][scene], color="grey", lw=0.8, ls=":", label="reference's own error")
     ax.axhline(target, color="red", lw=0.6, ls="-.", label="goal: %.0f %%" % target)
     ax.set_title(titles[scene], fontsize=9)
