@@ -332,7 +332,7 @@ def site_coordinates(brume, tmp, repeat, ref):
         view_rays(views, 100000)
     cases = [("view rays, -ab 0", views, ["-h", "-ab", "0"]),
              ("sensor grid -I -ab 5 -aa 0 -ad 512", GRID, ["-h", "-I", "-ab", "5", "-aa", "0", "-ad", "512", "-lw", "1e-5"]),
-             ("sensor grid -I -ab 5 (cache defaults)", GRID, ["-h", "-I", "-ab", "5"])]
+             ("sensor grid -I -ab 5 (defaults)", GRID, ["-h", "-I", "-ab", "5"])]
     print("\n== Site coordinates: the office moved to UTM (%.1f, %.1f, %.1f) against itself at the origin, "
           "-n 1 (best of %d) ==" % (*UTM, repeat))
     hdr = "%-40s %10s %10s %8s %13s %13s" % ("test", "origin s", "UTM s", "UTM/orig", "RMS % origin", "RMS % UTM")

@@ -64,7 +64,7 @@ def workloads(tmp):
          v10k, OFFICE, None, v500, None),
         ("office grid -I -ab 5 -aa 0 -ad 512", "rtrace",
          ["-h", "-I", "-ab", "5", "-aa", "0", "-ad", "512", "-lw", "1e-5", office], grid, OFFICE, None, grid12, None),
-        ("office grid -I -ab 5 (cache defaults)", "rtrace", ["-h", "-I", "-ab", "5", office], grid, OFFICE, None,
+        ("office grid -I -ab 5 (defaults)", "rtrace", ["-h", "-I", "-ab", "5", office], grid, OFFICE, None,
          grid12, None),
         ("office grid -I -ab 2 -cs 41", "rtrace", ["-h", "-I", "-ab", "2", "-cs", "41", office], grid, OFFICE,
          None, grid12, None),

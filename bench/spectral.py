@@ -22,7 +22,7 @@ BANDS = [3, 12, 24, 41, 81]
 SEATED = ["-vp", "0.3", "0.3", "1.6", "-vd", "1", "0.8", "-0.3", "-vh", "75", "-vv", "55"]
 WORKLOADS = {  # name: (program, options, standard input)
     "grid": ("rtrace", ["-h", "-I", "-ab", "3", "-aa", "0", "-ad", "4096", "-u-"], GRID),
-    "cache": ("rtrace", ["-h", "-I", "-ab", "5", "-u-"], GRID),
+    "cache": ("rtrace", ["-h", "-I", "-ab", "5", "-aS", "0", "-u-"], GRID),  # -aS 0: the sensors take records
     "picture": ("rpict", ["-ab", "1", "-x", "240", "-y", "180"] + SEATED, os.devnull),
     "start": ("rtrace", ["-h", "-ab", "0"], None),
 }
