@@ -177,7 +177,7 @@ void runContributions(ContributionRun o, const std::vector<std::string>& sceneFi
     RecordSource source{reader, o.yres > 0 ? long(std::max(o.xres, 1)) * o.yres : 0};
     const size_t width = size_t(bins.columns()) * settings.channels;
     std::optional<SharedBounces> pool;
-    if (o.shareBounces > 0)
+    if (o.shareBounces > 0 && sharesBounces(renderScene, o.render))
         pool.emplace(o.shareBounces, continuationsPerCell(o.render.ambientDivisions), settings.channels, width,
                      renderScene.geometry().origin());
     size_t batch = std::clamp<size_t>((size_t(64) << 20) / (width * sizeof(double)), 1, kRayBatchSize);
