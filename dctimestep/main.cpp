@@ -83,8 +83,6 @@ int run(int argc, char** argv) {
     if (factors.size() != 1 && factors.size() != 3) throw UsageError("one or three matrices before the sky", kUsage + table.usage());
     Matrix dc = readMatrix(factors[0]);
     for (size_t i = 1; i < factors.size(); ++i) {
-        if (factors[i].size() > 4 && factors[i].substr(factors[i].size() - 4) == ".xml")
-            throw Error(factors[i] + ": XML BSDFs are not read by Brume's dctimestep yet (a matrix of the BSDF is)");
         dc = multiply(dc, readMatrix(factors[i]));
     }
     // A sky without a header is a vector unless -n says how many steps.

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "contrib/contribution_run.h"
+#include "io/ray_reader.h"
 
 using namespace brume;
 
@@ -17,7 +18,8 @@ int run(int argc, char** argv) {
     OptionTable table = contributionOptions(o);
     auto line = parseContributionCommandLine(argc, argv, table, o.program, kUsage, "Multithreading\nAccumulation\n");
     if (!line) return 0;
-    runContributions(o, line->scene, line->command, std::cin);
+    RayReader reader(std::cin, o.inFormat, "(stdin)");
+    runContributions(o, line->scene, line->command, [&](std::array<double, 6>& r) { return reader.next(r); });
     return 0;
 }
 

@@ -3,6 +3,7 @@
 // patchAt (gendaymtx's rows) against the files.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <sstream>
 
@@ -32,17 +33,27 @@ double bin(const std::string& before, const std::string& file, const std::string
     return calc(variable);
 }
 
+// Each line of a file of Radiance's bins: a direction, then `n` bins; the number of lines.
+template <size_t n, class F>
+int forEachDirection(const std::string& file, F check) {
+    std::ifstream in(std::string(BRUME_TEST_DATA) + file);
+    int lines = 0;
+    for (std::string line; std::getline(in, line); ++lines) {
+        std::istringstream words(line);
+        double d[3];
+        std::array<double, n> expected;
+        for (double& v : d) words >> v;
+        for (double& v : expected) words >> v;
+        check(d, expected, line);
+    }
+    return lines;
+}
+
 }  // namespace
 
 TEST(CalBins, SkyPatchBinsAreRadiances) {
-    std::ifstream in(std::string(BRUME_TEST_DATA) + "/daymtx/bins.txt");
     brume::SkyPatches m1(1), m2(2), m4(4);
-    int n = 0;
-    for (std::string line; std::getline(in, line); ++n) {
-        std::istringstream words(line);
-        double d[3], expected[6];
-        for (double& v : d) words >> v;
-        for (double& v : expected) words >> v;
+    int n = forEachDirection<6>("/daymtx/bins.txt", [&](const double* d, const auto& expected, const std::string& line) {
         EXPECT_EQ(bin("", "tregenza.cal", "", "tbin", d), expected[0]) << line;
         EXPECT_EQ(bin("MF:1;", "reinhart.cal", "", "rbin", d), expected[1]) << line;
         EXPECT_EQ(bin("MF:2;", "reinhart.cal", "", "rbin", d), expected[2]) << line;
@@ -53,8 +64,28 @@ TEST(CalBins, SkyPatchBinsAreRadiances) {
         EXPECT_EQ(m1.patchAt(dir), expected[1]) << line;
         EXPECT_EQ(m2.patchAt(dir), expected[2]) << line;
         EXPECT_EQ(m4.patchAt(dir), expected[3]) << line;
-    }
+    });
     EXPECT_EQ(n, 400);
     EXPECT_EQ(bin("MF:2;", "reinhart.cal", "", "Nrbins", std::array<double, 3>{0, 0, 1}.data()), 578);
     EXPECT_EQ(bin("", "reinhartb.cal", "MF=4;", "Nrbins", std::array<double, 3>{0, 0, 1}.data()), 2305);
+}
+
+// The Klems bases' patches as bins: Brume's klems_full.cal, klems_half.cal and klems_quarter.cal against Radiance
+// 6.1's rcalc with its own files (test/data/rfluxmtx/klems_bins.txt, made by make_klems_bins.sh beside it), in
+// frames of either hand, with an up that is not unit, and jittered.
+TEST(CalBins, KlemsBinsAreRadiances) {
+    int n = forEachDirection<7>("/rfluxmtx/klems_bins.txt", [&](const double* d, const auto& expected, const std::string& line) {
+        EXPECT_EQ(bin("", "klems_full.cal", "RHS=1;", "kbinS", d), expected[0]) << line;
+        EXPECT_EQ(bin("", "klems_full.cal", "RHS=-1;", "kbin(0.36,-0.8,0.48,0.1,0.2,1.7)", d), expected[1]) << line;
+        EXPECT_EQ(bin("", "klems_full.cal", "JTR=1;", "kbin(0,0,-1,0,1,0)", d), expected[2]) << line;
+        EXPECT_EQ(bin("", "klems_half.cal", "RHS=1;", "khbin(-0.6,0,-0.8,0,0,2)", d), expected[3]) << line;
+        EXPECT_EQ(bin("", "klems_half.cal", "RHS=-1;", "khbin(0,0,-1,0,1,0)", d), expected[4]) << line;
+        EXPECT_EQ(bin("", "klems_quarter.cal", "RHS=1;", "kqbin(0.36,-0.8,0.48,0.1,0.2,1.7)", d), expected[5]) << line;
+        EXPECT_EQ(bin("", "klems_quarter.cal", "JTR=.5;", "kqbin(1,0,0,0,0,1)", d), expected[6]) << line;
+    });
+    EXPECT_EQ(n, 400);
+    const double up[3] = {0, 0, 1};
+    EXPECT_EQ(bin("", "klems_full.cal", "", "Nkbins", up), 145);
+    EXPECT_EQ(bin("", "klems_half.cal", "", "Nkhbins", up), 77);
+    EXPECT_EQ(bin("", "klems_quarter.cal", "", "Nkqbins", up), 41);
 }

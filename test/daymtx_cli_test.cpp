@@ -104,7 +104,8 @@ void writeSensorYear(const fs::path& dir) {
 
 // Every command line of commands.txt: gendaymtx's options (-d, -s, -O1, -r, -5, -A, -u, -i, -g/-c, -h, -D -n)
 // on two days of Chicago's year, rmtxop's products, sums, element-wise products and quotients, transposes,
-// transforms (symbolic ones among them) and scales, dctimestep's product. Radiance's to its printed precision, but
+// transforms (symbolic ones among them) and scales, a Klems BSDF's transmission matrix, dctimestep's products (DC
+// times sky, V times a BSDF's T times D times sky). Radiance's to its printed precision, but
 // rmtxop's sums, which Radiance takes in single precision (3e-7: two units of a float), and dctimestep's, which
 // Radiance's AVX2 code takes in another order than its own rmtxop (7e-7 apart): 2e-6 there.
 TEST(DaymtxCli, OutputMatchesRadianceToPrintedPrecision) {
@@ -124,7 +125,7 @@ TEST(DaymtxCli, OutputMatchesRadianceToPrintedPrecision) {
         double relative = line.rfind("dctimestep", 0) == 0 ? 2e-6 : line.rfind("rmtxop", 0) == 0 ? 3e-7 : 0;
         brume_test::expectSameWords(b.data, r.data, line, relative);
     }
-    EXPECT_EQ(n, 22);
+    EXPECT_EQ(n, 24);
 }
 
 // rmtxop's symbolic components of spectral matrices (9 bands over 780-380 nm, 6 over 720-400) against Radiance

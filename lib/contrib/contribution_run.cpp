@@ -112,7 +112,7 @@ void overrideSettings(RenderSettings& s) {
 }
 
 struct RecordSource {
-    RayReader& reader;
+    const RayStream& rays;
     long limit;  // records to read, 0: until the end
     long read = 0;
 };
@@ -122,7 +122,7 @@ bool nextRecords(RecordSource& src, int per, size_t max, std::vector<InputRay>& 
     rays.clear();
     std::array<double, 6> r;
     while (rays.size() < max * per && (src.limit == 0 || src.read < src.limit)) {
-        if (!src.reader.next(r)) {
+        if (!src.rays(r)) {
             if (rays.size() % per) throw Error("(stdin): input ends within a record (-c " + std::to_string(per) + ")");
             if (src.limit && src.read < src.limit)
                 warn("input ended after " + std::to_string(src.read) + " of " + std::to_string(src.limit) + " records");
@@ -152,7 +152,7 @@ OutputSettings outputSettings(const ContributionRun& o, const Scene& scene, cons
 }  // namespace
 
 void runContributions(ContributionRun o, const std::vector<std::string>& sceneFiles,
-                      const std::vector<std::string>& command, std::istream& in) {
+                      const std::vector<std::string>& command, const RayStream& input) {
     if (o.modifiers.empty()) throw Error("no modifiers given (-m or -M)");
     if (o.irradiance && o.irradianceAtHit) throw Error("-I and -i are exclusive");
     overrideSettings(o.render);
@@ -173,8 +173,7 @@ void runContributions(ContributionRun o, const std::vector<std::string>& sceneFi
     tbb::global_control stack(tbb::global_control::thread_stack_size, size_t(64) << 20);
     tbb::enumerable_thread_specific<ContributionTally> tallies(
         [&] { return ContributionTally(bins, o.values, settings.channels); });
-    RayReader reader(in, o.inFormat, "(stdin)");
-    RecordSource source{reader, o.yres > 0 ? long(std::max(o.xres, 1)) * o.yres : 0};
+    RecordSource source{input, o.yres > 0 ? long(std::max(o.xres, 1)) * o.yres : 0};
     const size_t width = size_t(bins.columns()) * settings.channels;
     std::optional<SharedBounces> pool;
     if (o.shareBounces > 0 && sharesBounces(renderScene, o.render))

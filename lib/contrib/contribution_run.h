@@ -3,7 +3,8 @@
 // traces each record's rays with a tally of its own (on every thread, records in input order) and writes the
 // records.
 #pragma once
-#include <istream>
+#include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,14 @@ std::optional<CommandLine> parseContributionCommandLine(int argc, char** argv, c
                                                         const ProgramOptions& program, const std::string& usage,
                                                         const std::string& features);
 
-// Traces the records of rays read from `rays` in `sceneFiles` (octrees and scene files), and writes them
-// where `run` says; `command` names the run in the output's header. Throws Error for what cannot be told
-// (media), bad rays, outputs that cannot be written (removed then).
+// Where a run's rays come from: the next ray's origin and direction in `ray`, false at the end. The standard
+// input's (a RayReader) or rfluxmtx's sender's.
+using RayStream = std::function<bool(std::array<double, 6>& ray)>;
+
+// Traces the records of rays from `rays` in `sceneFiles` (octrees and scene files), and writes them where
+// `run` says; `command` names the run in the output's header. Throws Error for what cannot be told (media),
+// bad rays, outputs that cannot be written (removed then).
 void runContributions(ContributionRun run, const std::vector<std::string>& sceneFiles,
-                      const std::vector<std::string>& command, std::istream& rays);
+                      const std::vector<std::string>& command, const RayStream& rays);
 
 }  // namespace brume

@@ -2,13 +2,10 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
+#include "contrib/flux_surfaces.h"
 #include "util/error.h"
 #include "util/options.h"
 
@@ -18,231 +15,86 @@ namespace {
 
 using glm::dvec3;
 
-// u=: an axis (X, +Y, -Z) or three numbers "x,y,z".
-std::optional<dvec3> direction(const std::string& text) {
-    double sign = 1;
-    size_t i = 0;
-    for (; i < text.size() && (text[i] == '+' || text[i] == '-'); ++i)
-        if (text[i] == '-') sign = -sign;
-    std::string rest = text.substr(i);
-    if (rest.size() == 1) {
-        int axis = std::tolower(static_cast<unsigned char>(rest[0])) - 'x';
-        if (axis < 0 || axis > 2) return std::nullopt;
-        dvec3 d(0);
-        d[axis] = sign;
-        return d;
-    }
-    dvec3 d;
-    char comma1, comma2, extra;
-    std::istringstream in(rest);
-    if (!(in >> d.x >> comma1 >> d.y >> comma2 >> d.z) || comma1 != ',' || comma2 != ',' || (in >> extra))
-        return std::nullopt;
-    if (!(glm::length(d) > 0) || !std::isfinite(glm::length(d))) return std::nullopt;
-    return sign * glm::normalize(d);
+// A function file rcontrib loads once for all the receivers that need it.
+void load(ContributionRun& run, const std::string& file, std::vector<std::string>& words) {
+    for (const CalDefinition& d : run.definitions)
+        if (d.kind == CalDefinition::Kind::File && d.text == file) return;
+    run.definitions.push_back({CalDefinition::Kind::File, file});
+    words.insert(words.end(), {"-f", file});
 }
 
-struct Settings {
-    char sign = '+';
-    std::string hemisphere, output;
-    int size = 1;
-    std::optional<dvec3> up;
+// The Klems bins of an h=, as Radiance's rfluxmtx names them.
+struct KlemsBins {
+    const char *file, *function, *count;
 };
 
-// The words of a "#@rfluxmtx" line after its marker.
-void parseSettings(const std::string& words, Settings& s, const SourceLocation& where) {
-    std::istringstream in(words);
-    for (std::string w; in >> w;) {
-        if (w.rfind("h=", 0) == 0 && w.size() > 2) {
-            std::string h = w.substr(2);
-            s.sign = h[0] == '-' ? '-' : '+';
-            if (h[0] == '+' || h[0] == '-') h = h.substr(1);
-            if (h.empty()) throw Error(where, "bad parameter h=" + w.substr(2));
-            s.hemisphere = h;
-            int n = 0;
-            for (char c : h)
-                if (std::isdigit(static_cast<unsigned char>(c))) n = 10 * n + (c - '0');
-            s.size = n > 0 ? n : 1;
-        } else if (w.rfind("u=", 0) == 0) {
-            s.up = direction(w.substr(2));
-            if (!s.up) throw Error(where, "bad up direction " + w);
-        } else if (w.rfind("o=", 0) == 0 && w.size() > 2) {
-            s.output = w.substr(2);
-            if ((s.output[0] == '"' || s.output[0] == '\'') && s.output.size() > 1 && s.output.back() == s.output[0])
-                s.output = s.output.substr(1, s.output.size() - 2);
-        } else {
-            throw Error(where, "bad parameter string: " + words);
-        }
-    }
-}
-
-struct ReceivingSurface {
-    double area;
-    dvec3 normal;  // unit, away from the receiving face
-    bool source;
-};
-
-// A polygon's (its vertices' right-hand order), a ring's, or a source's (opposite its direction, over the
-// solid angle of a cone of its angle); nullopt for other types.
-std::optional<ReceivingSurface> surfaceOf(const std::string& type, const std::vector<double>& a, const std::string& name,
-                                 const SourceLocation& where) {
-    auto bad = [&] { return Error(where, "bad argument count for surface element '" + name + "'"); };
-    if (type == "polygon") {
-        if (a.size() < 9 || a.size() % 3) throw bad();
-        dvec3 n(0), first(a[0], a[1], a[2]), e1 = dvec3(a[3], a[4], a[5]) - first;
-        for (size_t i = 2; i < a.size() / 3; ++i) {
-            dvec3 e2 = dvec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]) - first;
-            n += glm::cross(e1, e2);
-            e1 = e2;
-        }
-        double twice = glm::length(n);
-        if (!(twice > 0)) return ReceivingSurface{0, dvec3(0), false};
-        return ReceivingSurface{twice / 2, n / twice, false};
-    }
-    if (type == "ring") {
-        if (a.size() != 8) throw bad();
-        dvec3 n(a[3], a[4], a[5]);
-        if (!(glm::length(n) > 0)) throw Error(where, "bad orientation for surface element '" + name + "'");
-        double r0 = std::min(a[6], a[7]), r1 = std::max(a[6], a[7]);
-        return ReceivingSurface{M_PI * (r1 * r1 - r0 * r0), glm::normalize(n), false};
-    }
-    if (type == "source") {
-        if (a.size() != 4) throw bad();
-        dvec3 n(-a[0], -a[1], -a[2]);
-        if (!(glm::length(n) > 0)) throw Error(where, "bad orientation for surface element '" + name + "'");
-        double s = std::sin(M_PI / 360 * a[3]);
-        return ReceivingSurface{M_PI * s * s, glm::normalize(n), true};
-    }
-    return std::nullopt;
+const KlemsBins* klemsBins(const std::string& h) {
+    static const KlemsBins full{"klems_full.cal", "kbin", "Nkbins"}, half{"klems_half.cal", "khbin", "Nkhbins"},
+        quarter{"klems_quarter.cal", "kqbin", "Nkqbins"};
+    char basis = klemsBasisOf(h);
+    return basis == 'f' ? &full : basis == 'h' ? &half : basis == 'q' ? &quarter : nullptr;
 }
 
 }  // namespace
 
 std::vector<Receiver> readReceivers(const std::string& path) {
-    std::ifstream file(path);
-    if (!file) throw Error(path + ": cannot open receiver file");
     std::vector<Receiver> out;
-    Settings pending;
-    std::string line;
-    int lineNo = 0;
-    // Objects may span lines: words are read from the whole text, with their line numbers kept for
-    // messages by reading line by line into one stream of (line, word) pairs.
-    std::vector<std::pair<int, std::string>> words;
-    while (std::getline(file, line)) {
-        ++lineNo;
-        size_t start = line.find_first_not_of(" \t\r");
-        if (start != std::string::npos && line[start] == '!')
-            throw Error(SourceLocation{path, lineNo}, "commands in receiver files are not supported");
-        size_t hash = line.find('#');
-        if (hash != std::string::npos) {
-            std::string comment = line.substr(hash + 1);
-            if (comment.rfind("@rfluxmtx", 0) == 0) {
-                words.push_back({lineNo, "#@rfluxmtx"});
-                words.push_back({lineNo, comment.substr(9)});
-            }
-            line = line.substr(0, hash);
-        }
-        std::istringstream in(line);
-        for (std::string w; in >> w;) words.push_back({lineNo, w});
-    }
-    size_t i = 0;
-    auto where = [&] { return SourceLocation{path, i < words.size() ? words[i].first : lineNo}; };
-    auto next = [&](const char* what) -> std::string {
-        if (i >= words.size()) throw Error(SourceLocation{path, lineNo}, std::string("missing ") + what);
-        return words[i++].second;
-    };
-    while (i < words.size()) {
-        if (words[i].second == "#@rfluxmtx") {
-            SourceLocation at = where();
-            ++i;
-            parseSettings(next("settings"), pending, at);
-            continue;
-        }
-        SourceLocation at = where();
-        std::string modifier = next("modifier"), type = next("type"), name = next("name");
-        if (type == "alias") {
-            next("alias");
-            continue;
-        }
-        // Its strings, integers and reals, each a count and that many words.
-        auto group = [&]() {
-            long n;
-            try {
-                n = std::stol(next("argument count"));
-            } catch (const std::logic_error&) {
-                throw Error(at, "bad argument count for '" + name + "'");
-            }
-            if (n < 0 || n > 100000) throw Error(at, "bad argument count for '" + name + "'");
-            std::vector<std::string> out;
-            for (long k = 0; k < n; ++k) out.push_back(next("argument"));
-            return out;
-        };
-        group();  // strings: none a surface takes here
-        group();  // integers
-        std::vector<double> reals;
-        for (const std::string& w : group()) {
-            size_t used = 0;
-            try {
-                reals.push_back(std::stod(w, &used));
-            } catch (const std::logic_error&) {
-            }
-            if (used != w.size()) throw Error(at, "bad real argument '" + w + "' of '" + name + "'");
-        }
-        std::optional<ReceivingSurface> s = surfaceOf(type, reals, name, at);
-        if (!s) continue;
-        if (!(s->area > 0)) {
-            warn(at.str() + ": zero area for surface '" + name + "'");
-            continue;
-        }
-        if (out.empty() || out.back().modifier != modifier) {
+    FluxSettings pending;
+    for (const FluxSurface& s : readFluxSurfaces(path, "receiver")) {
+        for (const auto& [at, words] : s.settings) applyFluxSettings(words, pending, at);
+        if (out.empty() || out.back().modifier != s.modifier) {
             Receiver r;
-            r.modifier = modifier;
-            r.sign = pending.sign, r.hemisphere = pending.hemisphere, r.size = pending.size, r.up = pending.up;
-            r.output = pending.output;
+            r.modifier = s.modifier;
+            r.settings = pending;
             // As in Radiance, the next group keeps the hemisphere but not the up direction or the output.
             pending.up.reset();
             pending.output.clear();
             out.push_back(r);
         }
         Receiver& r = out.back();
-        r.normal += s->area * s->normal;
-        r.sources = r.sources && s->source;
-        if (s->source && std::abs(s->area - M_PI) > 1e-3) r.narrowSources.push_back(name);
+        r.normal += s.area * s.normal;
+        r.sources = r.sources && s.source;
+        if (s.source && std::abs(s.area - M_PI) > 1e-3) r.narrowSources.push_back(s.name);
     }
     if (out.empty()) throw Error(path + ": no receiver surfaces (polygons, rings or sources)");
     return out;
 }
 
 void addReceiver(const Receiver& r, ContributionRun& run, std::vector<std::string>& words) {
-    if (r.hemisphere.empty()) throw Error("receiver '" + r.modifier + "': missing hemisphere sampling type (h=)");
+    if (r.settings.hemisphere.empty()) throw Error("receiver '" + r.modifier + "': missing hemisphere sampling type (h=)");
     if (!(glm::length(r.normal) > 0)) throw Error("receiver '" + r.modifier + "': undefined normal for hemisphere sampling");
     dvec3 n = glm::normalize(r.normal);
-    dvec3 up = r.up ? *r.up : std::abs(n.z) < 0.7 ? dvec3(0, 0, 1) : dvec3(0, 1, 0);
-    if (!r.output.empty()) {
-        run.next.output = r.output;
-        words.insert(words.end(), {"-o", r.output});
+    dvec3 up = upOf(r.settings, n);
+    if (!r.settings.output.empty()) {
+        run.next.output = r.settings.output;
+        words.insert(words.end(), {"-o", r.settings.output});
     }
-    char kind = char(std::tolower(static_cast<unsigned char>(r.hemisphere[0])));
+    char kind = char(std::tolower(static_cast<unsigned char>(r.settings.hemisphere[0])));
     if (kind == 'u' || kind == '1') {
         run.next.binCount = "1";
         run.next.bin = r.sources ? "0" : "if(-Dx*" + formatShort(n.x) + "-Dy*" + formatShort(n.y) + "-Dz*" + formatShort(n.z) + ",0,-1)";
     } else if (kind == 'r' || kind == 't') {
         if (!r.narrowSources.empty())
             throw Error("source '" + r.narrowSources.front() + "' must be 180-degrees");
-        bool loaded = false;
-        for (const CalDefinition& d : run.definitions) loaded = loaded || d.text == "reinhartb.cal";
-        if (!loaded) {
-            run.definitions.push_back({CalDefinition::Kind::File, "reinhartb.cal"});
-            words.insert(words.end(), {"-f", "reinhartb.cal"});
-        }
-        run.next.parameters = "MF=" + std::to_string(r.size) + ",rNx=" + formatShort(n.x) + ",rNy=" + formatShort(n.y) +
+        load(run, "reinhartb.cal", words);
+        run.next.parameters = "MF=" + std::to_string(r.settings.size) + ",rNx=" + formatShort(n.x) + ",rNy=" + formatShort(n.y) +
                               ",rNz=" + formatShort(n.z) + ",Ux=" + formatShort(up.x) + ",Uy=" + formatShort(up.y) +
-                              ",Uz=" + formatShort(up.z) + ",RHS=" + r.sign + "1";
+                              ",Uz=" + formatShort(up.z) + ",RHS=" + r.settings.sign + "1";
         run.next.binCount = "Nrbins";
         run.next.bin = "rbin";
         words.insert(words.end(), {"-p", run.next.parameters});
+    } else if (const KlemsBins* k = klemsBins(r.settings.hemisphere)) {
+        if (!r.narrowSources.empty())
+            throw Error("source '" + r.narrowSources.front() + "' must be 180-degrees");
+        load(run, k->file, words);
+        run.next.parameters = std::string("RHS=") + r.settings.sign + "1";
+        run.next.binCount = k->count;
+        run.next.bin = std::string(k->function) + "(" + formatShort(n.x) + "," + formatShort(n.y) + "," +
+                       formatShort(n.z) + "," + formatShort(up.x) + "," + formatShort(up.y) + "," + formatShort(up.z) + ")";
+        words.insert(words.end(), {"-p", run.next.parameters});
     } else {
-        throw Error("receiver '" + r.modifier + "': hemisphere sampling h=" + r.hemisphere +
-                    " is not supported yet (Brume has u, r and t)");
+        throw Error("receiver '" + r.modifier + "': hemisphere sampling h=" + r.settings.hemisphere +
+                    " is not supported yet (Brume has u, r, t and kf, kh, kq)");
     }
     words.insert(words.end(), {"-bn", run.next.binCount, "-b", run.next.bin, "-m", r.modifier});
     run.addModifier(r.modifier);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/picture.h"
+#include "matrix/bsdf_matrix.h"
 #include "util/error.h"
 #include "util/header.h"
 
@@ -228,6 +229,10 @@ Matrix parseMatrix(const std::string& bytes, const std::string& name, const Matr
 }
 
 Matrix readMatrix(const std::string& spec, const MatrixShape& shape, MatrixFormat* stored) {
+    if (isBsdfFile(spec)) {
+        if (stored) *stored = MatrixFormat::Ascii;
+        return transmissionMatrix(spec);
+    }
     return parseMatrix(inputBytes(spec), spec == "-" ? "<stdin>" : spec, shape, stored);
 }
 

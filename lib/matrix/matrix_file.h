@@ -24,8 +24,9 @@ struct MatrixShape {
     int comps = 3;
 };
 
-// A matrix from a file, "-" (the standard input) or "!command" (its output); `stored`, if given, receives
-// the input's format. Throws Error naming the input on anything malformed, truncated or too short.
+// A matrix from a file, "-" (the standard input) or "!command" (its output), or a Klems BSDF's transmission
+// matrix from an XML file (bsdf_matrix.h, as Radiance's rmtxop and dctimestep read them); `stored`, if given,
+// receives the input's format. Throws Error naming the input on anything malformed, truncated or too short.
 Matrix readMatrix(const std::string& spec, const MatrixShape& shape = {}, MatrixFormat* stored = nullptr);
 // The same from bytes already read (`name` for messages).
 Matrix parseMatrix(const std::string& bytes, const std::string& name, const MatrixShape& shape = {},

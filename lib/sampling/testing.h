@@ -110,7 +110,7 @@ inline double upperGammaQ(double a, double x) {
 // The significance of each test: 1% for the whole suite. Each chi-square test rejects a correct sampler with
 // probability α', so n of them reject at least one with 1 − (1 − α')ⁿ; Šidák's correction (as Mitsuba's)
 // makes that α = 0.01: α' = 1 − (1 − α)^{1/n}. kTestsInSuite bounds n, the number of chiSquare calls the
-// suite makes (91 today: raise it when adding more); a bound too high only makes each test a little
+// suite makes (99 today: raise it when adding more); a bound too high only makes each test a little
 // less sensitive (α' = 1.0e-4 for n = 100).
 constexpr double kSuiteSignificance = 0.01;
 constexpr int kTestsInSuite = 100;

@@ -6,7 +6,7 @@
 # Brume's in the last bit of a float; commands.txt has -i at the printed precision.) test/daymtx_cli_test.cpp compares Brume's programs with
 # both. Needs Radiance's programs on PATH (6.1a, commit bcffc2b52d of LBNL-ETA/Radiance, built with CMake,
 # -DBUILD_HEADLESS=ON); chicago48.wea is Radiance's epw2wea of ../shared/data/weather/chicago.epw, its
-# header and the records of June 21st and December 21st. a.mtx, b.mtx and dc.mtx were written by hand.
+# header and the records of June 21st and December 21st. a.mtx, b.mtx, dc.mtx, v41.mtx and d41.mtx were written by hand.
 #   PATH=/tmp/radiance/inst/bin:$PATH test/data/daymtx/make_radiance_outputs.sh
 set -euo pipefail
 cd "$(dirname "$0")"
