@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "io/picture.h"
 
 namespace {
 
@@ -159,6 +160,34 @@ TEST(RcontribCli, BinsPastTheLastAreLeftOutWithAWarning) {
     auto r = rows("\n\n" + o.out);
     ASSERT_EQ(r.size(), 1u);
     EXPECT_NEAR(r[0][0], kPi / 2, 0.1);  // the west half of the sky only
+}
+
+// -fc with -x and -y: each bin's file a picture, as Radiance's rcontrib writes it (an image-based view matrix:
+// vwrays' rays, a picture per window bin): NROWS= the pixels, no NCOLS=, the resolution line after the
+// header, RGBE pixels that Brume's picture reader (and Radiance's) reads back. Six rays under an open sky of
+// radiance 1, its bins split at Dx = 0.5: each ray up 1 in its bin, 0 in the other; each ray down 0.
+TEST(RcontribCli, RgbeOutputWritesAPicturePerBin) {
+    Case c("rgbe", openSky(), "0 0 0 0 0 1\n0 0 0 0 0 -1\n0 0 0 1 0 .5\n0 0 0 1 0 -.5\n0 0 0 0 1 .1\n0 0 0 0 1 -.1\n");
+    Output o = c.run("-fac -x 3 -y 2 -ab 0 -o 'bin%d.hdr' -bn 2 -b 'if(Dx-.5,1,0)' -m sky_glow");
+    ASSERT_EQ(o.status, 0) << o.err;
+    EXPECT_EQ(o.out, "");
+    for (int b : {0, 1}) {
+        std::string file = (c.dir / ("bin" + std::to_string(b) + ".hdr")).string();
+        std::string text = slurp(file);
+        EXPECT_EQ(headerValue(text, "NROWS="), "6");
+        EXPECT_EQ(headerValue(text, "NCOLS="), "");
+        EXPECT_EQ(headerValue(text, "FORMAT="), "32-bit_rle_rgbe");
+        EXPECT_NE(text.find("\n\n-Y        2 +X        3\n"), std::string::npos);
+        brume::Picture p = brume::readPicture(file);
+        ASSERT_EQ(p.width, 3);
+        ASSERT_EQ(p.height, 2);
+        const int binOf[6] = {0, -1, 1, -1, 0, -1};  // each ray's bin, -1: it meets the ground
+        // RGBE keeps 8 bits of mantissa, read back at the middle of its step (1 reads 1.0039).
+        for (int i = 0; i < 6; ++i) EXPECT_NEAR(p.pixels[3 * i], binOf[i] == b ? 1 : 0, 0.008) << "bin " << b << " ray " << i;
+    }
+    Output bad = c.run("-fcc -o x.hdr -m sky_glow");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.err.find("Illegal i/o format: -fcc"), std::string::npos) << bad.err;
 }
 
 TEST(RcontribCli, SameRecordsOnAnyNumberOfThreads) {

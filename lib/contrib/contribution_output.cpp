@@ -1,5 +1,6 @@
 #include "contrib/contribution_output.h"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -8,6 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/value_writer.h"
+#include "spectrum/spectrum.h"
 #include "util/error.h"
 #include "util/header.h"
 
@@ -46,7 +49,10 @@ bool exists(const std::string& path) {
     return ::stat(path.c_str(), &st) == 0;
 }
 
-const char* formatWord(char format) { return format == 'f' ? "float" : format == 'd' ? "double" : "ascii"; }
+const char* formatWord(char format, int channels) {
+    if (format == 'c') return channels > 3 ? "Radiance_spectra" : "32-bit_rle_rgbe";
+    return format == 'f' ? "float" : format == 'd' ? "double" : "ascii";
+}
 
 }  // namespace
 
@@ -97,10 +103,17 @@ void ContributionOutput::writeHeader(Stream& s) const {
         h += "MODIFIER=" + s.modifier + "\n";
         if (s.columns.size() == 1) h += "BIN=" + std::to_string(s.bin) + "\n";
     }
-    if (settings_.rows > 0) h += "NROWS=" + std::to_string(settings_.rows) + "\n";
-    h += "NCOLS=" + std::to_string(s.columns.size()) + "\n";
-    if (settings_.format != 'a') h += std::string("BigEndian=") + (std::endian::native == std::endian::big ? "1" : "0") + "\n";
-    endHeader(h, formatWord(settings_.format), s.file);
+    if (settings_.yres > 0) h += "NROWS=" + std::to_string(settings_.yres * std::max(settings_.xres, 1)) + "\n";
+    bool picture = settings_.xres > 0 && settings_.yres > 0 && s.columns.size() == 1;
+    if (!picture) h += "NCOLS=" + std::to_string(s.columns.size()) + "\n";
+    if (settings_.format == 'f' || settings_.format == 'd')
+        h += std::string("BigEndian=") + (std::endian::native == std::endian::big ? "1" : "0") + "\n";
+    endHeader(h, formatWord(settings_.format, settings_.channels), s.file);
+    if (picture) {
+        char resolution[64];
+        std::snprintf(resolution, sizeof resolution, "-Y %8d +X %8d\n", settings_.yres, settings_.xres);
+        h += resolution;
+    }
     std::fputs(h.c_str(), s.file);
 }
 
@@ -115,9 +128,15 @@ void ContributionOutput::write(const std::vector<double>& record) {
                 } else if (settings_.format == 'f') {
                     float f = float(v[k]);
                     std::fwrite(&f, sizeof f, 1, s.file);
-                } else {
+                } else if (settings_.format == 'd') {
                     std::fwrite(&v[k], sizeof(double), 1, s.file);
                 }
+            }
+            if (settings_.format == 'c') {
+                unsigned char bytes[Spectrum::kMaxChannels + 1];
+                if (n == 3) encodeRgbe(float(v[0]), float(v[1]), float(v[2]), bytes);
+                else encodeCommonExponent(v, n, bytes);
+                std::fwrite(bytes, 1, size_t(n == 3 ? 4 : n + 1), s.file);
             }
         }
         if (settings_.format == 'a') std::fputc('\n', s.file);

@@ -1,9 +1,11 @@
 // Where rcontrib's records go, as Radiance's rcontrib writes them: each modifier's bins to the files its -o
 // pattern names (%s: the modifier, %d: the bin, so a file per modifier or per bin), or without one to the
-// standard output, those modifiers' bins on one row; each stream with its header (the command, NCOMP, MODIFIER= and BIN= where one, NROWS= when -y says
-// how many, NCOLS=, FORMAT=). ASCII elements are each component "%e" and a tab; binary ones native floats
-// or doubles. Files are written beside their names and renamed into place when complete: a run that fails
-// leaves none half-written (and an existing file is refused unless -fo).
+// standard output, those modifiers' bins on one row; each stream with its header (the command, NCOMP, MODIFIER=
+// and BIN= where one, NROWS= when -y says how many, -y times -x, NCOLS= unless it is a picture, FORMAT=); a
+// stream of one bin with -x and -y is a picture, its resolution line after the header. ASCII elements are
+// each component "%e" and a tab; binary ones native floats or doubles, or (-fc) Radiance's common-exponent
+// bytes (RGBE; spectra's N mantissas and an exponent). Files are written beside their names and renamed into
+// place when complete: a run that fails leaves none half-written (and an existing file is refused unless -fo).
 #pragma once
 #include <cstdio>
 #include <string>
@@ -14,10 +16,10 @@
 namespace brume {
 
 struct OutputSettings {
-    char format = 'a';         // a, f, d
+    char format = 'a';         // a, f, d, c
     bool header = true;        // -h
     bool overwrite = false;    // -fo
-    int rows = 0;              // NROWS (-y), 0: not said
+    int xres = 0, yres = 0;    // -x, -y: NROWS = yres × xres (or yres), 0: not said
     int channels = 3;          // NCOMP
     std::vector<std::string> colorLines;   // after NCOMP: WAVELENGTH_SPLITS= for spectral channels
     std::vector<std::string> headerLines;  // the scene's header and the command line, without "#?RADIANCE"

@@ -41,9 +41,10 @@ void setFormats(ContributionRun& o, const std::string& v) {
         o.overwrite = v != "o-";
         return;
     }
+    // RGBE (c) for the output only, as pictures: rays come as numbers.
     if (v.empty() || v.size() > 2 || std::string("afd").find(v[0]) == std::string::npos ||
-        (v.size() == 2 && std::string("afd").find(v[1]) == std::string::npos))
-        throw Error("Illegal i/o format: -f" + v + (v.size() == 2 && v[1] == 'c' ? " (RGBE output is not supported yet)" : ""));
+        (v.size() == 2 && std::string("afdc").find(v[1]) == std::string::npos))
+        throw Error("Illegal i/o format: -f" + v);
     o.inFormat = v[0];
     o.outFormat = v.size() == 2 ? v[1] : v[0];
 }
@@ -139,7 +140,7 @@ OutputSettings outputSettings(const ContributionRun& o, const Scene& scene, cons
     out.format = o.outFormat;
     out.header = o.header;
     out.overwrite = o.overwrite;
-    out.rows = o.yres;
+    out.xres = o.xres, out.yres = o.yres;
     out.channels = Spectrum(0.f).size();
     if (out.channels > 3) out.colorLines = ColorOutput{ColorOutput::Kind::Spectral}.headerLines();
     out.headerLines = scene.headerLines;
