@@ -1,8 +1,9 @@
-// dctimestep: daylight coefficients times sky vectors or matrices (DC × sky, or V × T × D × sky), as
-// Radiance's dctimestep (see man/dctimestep.1).
+// dctimestep: daylight coefficients times sky vectors or matrices (DC × sky, or V × T × D × sky; DC or V as a
+// picture per bin, summed into pictures), as Radiance's dctimestep (see man/dctimestep.1).
 #include <cstdio>
 #include <memory>
 
+#include "matrix/component_pictures.h"
 #include "matrix/matrix_file.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -75,43 +76,44 @@ int run(int argc, char** argv) {
     OptionTable table = makeTable(o);
     std::vector<std::string> specs = operandsAfterOptions(table, argc, argv, kUsage);
     if (specs.empty() || specs.size() > 4) throw UsageError("one to four matrices", kUsage + table.usage());
-    for (const std::string& s : specs)
-        if (s.find('%') != std::string::npos) throw Error("component pictures (" + s + ") are not summed by Brume's dctimestep yet");
     // DC [sky] or V T D [sky]: the sky is last when there are two or four, else the standard input.
     bool skyGiven = specs.size() == 2 || specs.size() == 4;
     std::vector<std::string> factors(specs.begin(), skyGiven ? specs.end() - 1 : specs.end());
     if (factors.size() != 1 && factors.size() != 3) throw UsageError("one or three matrices before the sky", kUsage + table.usage());
-    Matrix dc = readMatrix(factors[0]);
-    for (size_t i = 1; i < factors.size(); ++i) {
-        dc = multiply(dc, readMatrix(factors[i]));
-    }
+    for (size_t i = 1; i < specs.size(); ++i)
+        if (namesComponentPictures(specs[i])) throw Error(specs[i] + ": only the first matrix may be pictures by bin");
     // A sky without a header is a vector unless -n says how many steps.
     MatrixShape shape{o.skyFormat, o.steps > 0 ? o.steps : 1, 3};
-    Matrix sky = readMatrix(skyGiven ? specs.back() : "-", shape);
-    Matrix result = multiply(dc, sky);
+    // Multiplied from the sky back, as Radiance's: T (D sky), then the first matrix (or its pictures) times that.
+    Matrix weights = readMatrix(skyGiven ? specs.back() : "-", shape);
+    for (size_t i = factors.size() - 1; i >= 1; --i) weights = multiply(readMatrix(factors[i]), weights);
+    const bool pictures = namesComponentPictures(factors[0]);
+    if (pictures) o.format = MatrixFormat::Rgbe;  // as Radiance's, which says it changes the output to -oc
+    Matrix result = pictures ? Matrix() : multiply(readMatrix(factors[0]), weights);
+    auto frame = [&](int step) { return pictures ? sumComponentPictures(factors[0], weights, step) : columnOf(result, step); };
     std::vector<std::string> lines = {commandLine({argv, argv + argc})};
     std::string dates = softwareAndDates();
     for (size_t at = 0, eol; (eol = dates.find('\n', at)) != std::string::npos; at = eol + 1) lines.push_back(dates.substr(at, eol - at));
     if (o.outputSpec.find('%') != std::string::npos) {
-        for (int c = 0; c < result.cols; ++c) {
+        for (int c = 0; c < weights.cols; ++c) {
             char path[4096];
             std::snprintf(path, sizeof path, o.outputSpec.c_str(), c);
             std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{std::fopen(path, "wb"), std::fclose};
             if (!f) throw Error("cannot open '" + std::string(path) + "' for output");
-            std::vector<std::string> frame = lines;
-            frame.push_back("FRAME=" + std::to_string(c));
-            write(f.get(), columnOf(result, c), o, frame);
+            std::vector<std::string> named = lines;
+            named.push_back("FRAME=" + std::to_string(c));
+            write(f.get(), frame(c), o, named);
         }
         return 0;
     }
+    if (weights.cols > 1 && (pictures || (o.format == MatrixFormat::Rgbe && (o.xres > 0 || o.yres > 0))))
+        throw Error("pictures of several time steps are one per step: give -o with %d");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{nullptr, std::fclose};
     if (!o.outputSpec.empty()) {
         f.reset(std::fopen(o.outputSpec.c_str(), "wb"));
         if (!f) throw Error("cannot open '" + o.outputSpec + "' for output");
     }
-    if (o.format == MatrixFormat::Rgbe && result.cols > 1 && (o.xres > 0 || o.yres > 0))
-        throw Error("-oc with -x/-y makes one picture per time step: give -o with %d");
-    write(f ? f.get() : stdout, std::move(result), o, lines);
+    write(f ? f.get() : stdout, pictures ? frame(0) : std::move(result), o, lines);
     return 0;
 }
 

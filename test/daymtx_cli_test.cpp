@@ -252,7 +252,7 @@ TEST(DaymtxCli, BadInputIsNamedAndWritesNothing) {
                    {"rmtxop -c Y splits.mtx", "rmtxop: 'WAVELENGTH_SPLITS= nan 588 480 380': the spectral range must span 50 nm"},
                    {"rmtxop -c M narrow.mtx", "rmtxop: 'WAVELENGTH_SPLITS= 500 490 480 470': the spectral range must span 50 nm"},
                    {"dctimestep c.mtx b.mtx", "dctimestep: cannot multiply a 2x2x1 matrix by a 3x1x1 one"},
-                   {"dctimestep 'c%03d.hdr' b.mtx", "dctimestep: component pictures"}});
+                   {"dctimestep 'c%03d.hdr' b.mtx", "dctimestep: c000.hdr: cannot open"}});
 }
 
 // A record without the irradiances the sky needs (EPW's 9999) is an error naming it, not a dark hour.
