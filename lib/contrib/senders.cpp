@@ -5,7 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "contrib/flux_surfaces.h"
 #include "geometry/polygon.h"
 #include "sampling/random.h"
 #include "sampling/warp.h"
@@ -29,6 +28,26 @@ const KlemsBasis* klemsBasis(const std::string& h) {
 
 }  // namespace
 
+Sender::Surface Sender::surfaceOf(const FluxSurface& s) {
+    Surface surface{s.normal, s.area, nullptr, {}, dvec3(0)};
+    const std::vector<double>& a = s.arguments;
+    if (s.type == "ring") {
+        surface.centre = dvec3(a[0], a[1], a[2]);
+        surface.inner = std::min(a[6], a[7]);
+        return surface;
+    }
+    std::vector<dvec3> vertices;
+    for (size_t i = 0; i + 2 < a.size(); i += 3) vertices.emplace_back(a[i], a[i + 1], a[i + 2]);
+    std::string why;
+    std::optional<Polygon> polygon = makePolygon(vertices, why);
+    if (polygon) polygon->triangles = triangulate(*polygon);
+    if (!polygon || polygon->triangles.empty())
+        throw Error(s.at, "cannot sample sender polygon '" + s.name + "'" + (why.empty() ? "" : ": " + why));
+    surface.polygon = std::make_unique<Polygon>(std::move(*polygon));
+    surface.points = PolygonPoints(*surface.polygon);
+    return surface;
+}
+
 Sender::Sender(const std::string& path) {
     FluxSettings settings;
     std::string modifier;
@@ -37,37 +56,28 @@ Sender::Sender(const std::string& path) {
         for (const auto& [at, words] : s.settings) applyFluxSettings(words, settings, at);
         if (!modifier.empty() && s.modifier != modifier) warn(s.at.str() + ": multiple modifiers in sender");
         modifier = s.modifier;
-        Surface surface{s.normal, s.area, nullptr, {}, dvec3(0)};
-        const std::vector<double>& a = s.arguments;
-        if (s.type == "polygon") {
-            std::vector<dvec3> vertices;
-            for (size_t i = 0; i + 2 < a.size(); i += 3) vertices.emplace_back(a[i], a[i + 1], a[i + 2]);
-            std::string why;
-            std::optional<Polygon> polygon = makePolygon(vertices, why);
-            if (polygon) polygon->triangles = triangulate(*polygon);
-            if (!polygon || polygon->triangles.empty())
-                throw Error(s.at, "cannot sample sender polygon '" + s.name + "'" + (why.empty() ? "" : ": " + why));
-            surface.polygon = std::make_unique<Polygon>(std::move(*polygon));
-            surface.points = PolygonPoints(*surface.polygon);
-        } else {
-            surface.centre = dvec3(a[0], a[1], a[2]);
-            surface.inner = std::min(a[6], a[7]);
-        }
         normal_ += s.area * s.normal;
-        surfaces_.push_back(std::move(surface));
+        surfaces_.push_back(surfaceOf(s));
     }
     if (surfaces_.empty()) throw Error(path + ": no sender surface (polygons or rings)");
     if (!settings.output.empty()) warn(path + ": ignoring output file in sender ('" + settings.output + "')");
-    const std::string& h = settings.hemisphere;
-    if (h.empty()) throw Error(path + ": missing sender sampling type (h=)");
+    if (settings.hemisphere.empty()) throw Error(path + ": missing sender sampling type (h=)");
+    setFrame(settings, path);
+    setBasis(settings, path);
+}
+
+void Sender::setFrame(const FluxSettings& settings, const std::string& path) {
     if (!(glm::length(normal_) > 0)) throw Error(path + ": undefined normal for sender sampling");
     normal_ = glm::normalize(normal_);
-    dvec3 up = upOf(settings, normal_);
-    dvec3 across = glm::cross(up, normal_);
+    dvec3 across = glm::cross(upOf(settings, normal_), normal_);
     if (!(glm::length(across) > 1e-12)) throw Error(path + ": up vector coincides with sender normal");
     u_ = glm::normalize(across);
     v_ = glm::cross(normal_, u_);
     if (settings.sign == '-') u_ = -u_;
+}
+
+void Sender::setBasis(const FluxSettings& settings, const std::string& path) {
+    const std::string& h = settings.hemisphere;
     char kind = char(std::tolower(static_cast<unsigned char>(h[0])));
     if (kind == 'u' || kind == '1') {
         kind_ = 'u';
@@ -77,8 +87,8 @@ Sender::Sender(const std::string& path) {
         bins_ = 0;
         for (int row = 0; row < reinhartRows(subdivisions_); ++row) bins_ += reinhartPerRow(row, subdivisions_);
     } else if (klemsBasisOf(h)) {
-        klems_ = klemsBasis(h);
         kind_ = 'k';
+        klems_ = klemsBasis(h);
         bins_ = klems_->size();
     } else {
         throw Error(path + ": sender sampling h=" + h + " is not supported (Brume has u, r, t and kf, kh, kq)");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "contrib/flux_surfaces.h"
 #include "geometry/shapes.h"
 #include "material/klems_basis.h"
 #include "sampling/polygon_points.h"
@@ -47,6 +48,9 @@ private:
     // A point on the surfaces for a ray along `dir`, for u, v uniform in [0, 1).
     dvec3 origin(const dvec3& dir, double u, double v) const;
     dvec3 local(const dvec3& d) const { return d.x * u_ + d.y * v_ + d.z * normal_; }
+    static Surface surfaceOf(const FluxSurface& s);
+    void setFrame(const FluxSettings& settings, const std::string& path);
+    void setBasis(const FluxSettings& settings, const std::string& path);
 
     std::vector<Surface> surfaces_;
     dvec3 normal_{0}, u_, v_;  // the basis's frame: u = ±(up × normal), v = normal × (up × normal)
