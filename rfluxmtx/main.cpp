@@ -85,7 +85,7 @@ int run(int argc, char** argv) {
     std::vector<std::string> rcontrib{"rcontrib"};
     rcontrib.insert(rcontrib.end(), line->command.begin() + 1, line->command.end());
     std::erase(rcontrib, std::string("-v"));
-    for (const Receiver& r : readReceivers(operands[1])) addReceiver(r, o, rcontrib);
+    for (const FluxReceiver& r : readReceivers(operands[1])) addReceiver(r, o, rcontrib);
     rcontrib.insert(rcontrib.end(), scene.begin(), scene.end());
     if (verbose) {
         std::cerr << programName() << ": running: " << shellLine(rcontrib) << "\n";

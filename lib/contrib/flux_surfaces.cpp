@@ -58,10 +58,14 @@ void applyFluxSettings(const std::string& words, FluxSettings& s, const SourceLo
             if (h[0] == '+' || h[0] == '-') h = h.substr(1);
             if (h.empty()) throw Error(where, "bad parameter h=" + w.substr(2));
             s.hemisphere = h;
-            int n = 0;
-            for (char c : h)
-                if (std::isdigit(static_cast<unsigned char>(c))) n = 10 * n + (c - '0');
-            s.size = n > 0 ? n : 1;
+            // The number after the type's letter (Reinhart's MF), as Radiance's atoi reads it.
+            long n = 0;
+            for (size_t k = 1; k < h.size() && std::isdigit(static_cast<unsigned char>(h[k])) && n <= kMaxSubdivisions; ++k)
+                n = 10 * n + (h[k] - '0');
+            if (n > kMaxSubdivisions)
+                throw Error(where, "bad parameter h=" + w.substr(2) + ": more than " + std::to_string(kMaxSubdivisions) +
+                                       " subdivisions");
+            s.size = n > 0 ? int(n) : 1;
         } else if (w.rfind("u=", 0) == 0) {
             s.up = direction(w.substr(2));
             if (!s.up) throw Error(where, "bad up direction " + w);
@@ -191,6 +195,7 @@ std::vector<FluxSurface> readFluxSurfaces(const std::string& path, const std::st
         }
         std::optional<Shape> s = shapeOf(type, reals, name, at);
         if (!s) continue;
+        if (!std::isfinite(s->area)) throw Error(at, "surface element '" + name + "' too large to measure");
         if (!(s->area > 0)) {
             warn(at.str() + ": zero area for surface '" + name + "'");
             continue;

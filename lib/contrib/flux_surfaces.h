@@ -13,6 +13,9 @@
 
 namespace brume {
 
+// Reinhart's subdivisions an h= may ask for: 100 makes 1.44 million patches.
+constexpr int kMaxSubdivisions = 100;
+
 struct FluxSettings {
     char sign = '+';         // h=-…: a left-handed frame
     std::string hemisphere;  // h= without its sign: "u", "r4", "kf", …

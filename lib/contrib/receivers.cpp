@@ -37,13 +37,13 @@ const KlemsBins* klemsBins(const std::string& h) {
 
 }  // namespace
 
-std::vector<Receiver> readReceivers(const std::string& path) {
-    std::vector<Receiver> out;
+std::vector<FluxReceiver> readReceivers(const std::string& path) {
+    std::vector<FluxReceiver> out;
     FluxSettings pending;
     for (const FluxSurface& s : readFluxSurfaces(path, "receiver")) {
         for (const auto& [at, words] : s.settings) applyFluxSettings(words, pending, at);
         if (out.empty() || out.back().modifier != s.modifier) {
-            Receiver r;
+            FluxReceiver r;
             r.modifier = s.modifier;
             r.settings = pending;
             // As in Radiance, the next group keeps the hemisphere but not the up direction or the output.
@@ -51,7 +51,7 @@ std::vector<Receiver> readReceivers(const std::string& path) {
             pending.output.clear();
             out.push_back(r);
         }
-        Receiver& r = out.back();
+        FluxReceiver& r = out.back();
         r.normal += s.area * s.normal;
         r.sources = r.sources && s.source;
         if (s.source && std::abs(s.area - M_PI) > 1e-3) r.narrowSources.push_back(s.name);
@@ -60,7 +60,7 @@ std::vector<Receiver> readReceivers(const std::string& path) {
     return out;
 }
 
-void addReceiver(const Receiver& r, ContributionRun& run, std::vector<std::string>& words) {
+void addReceiver(const FluxReceiver& r, ContributionRun& run, std::vector<std::string>& words) {
     if (r.settings.hemisphere.empty()) throw Error("receiver '" + r.modifier + "': missing hemisphere sampling type (h=)");
     if (!(glm::length(r.normal) > 0)) throw Error("receiver '" + r.modifier + "': undefined normal for hemisphere sampling");
     dvec3 n = glm::normalize(r.normal);

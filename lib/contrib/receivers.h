@@ -13,7 +13,7 @@
 
 namespace brume {
 
-struct Receiver {
+struct FluxReceiver {
     std::string modifier;
     FluxSettings settings;    // the hemisphere, its hand and size, up, output
     glm::dvec3 normal{0};     // Σ area × normal of its surfaces
@@ -23,11 +23,11 @@ struct Receiver {
 
 // The receivers of a receiver file, in order. Throws Error (file:line) for a bad #@rfluxmtx line, a surface
 // with bad arguments, no receiver at all.
-std::vector<Receiver> readReceivers(const std::string& path);
+std::vector<FluxReceiver> readReceivers(const std::string& path);
 
 // Adds what `r` asks rcontrib for to `run`: the bins' definitions and parameters, their count and
 // expression, and the modifier; and to `words` the same as rcontrib's options. Throws Error for a
 // hemisphere Brume has no bins for yet (Shirley-Chiu, CIE) or one binned over a source narrower than 180°.
-void addReceiver(const Receiver& r, ContributionRun& run, std::vector<std::string>& words);
+void addReceiver(const FluxReceiver& r, ContributionRun& run, std::vector<std::string>& words);
 
 }  // namespace brume
