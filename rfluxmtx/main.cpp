@@ -81,11 +81,16 @@ int run(int argc, char** argv) {
         sender.emplace(operands[0]);
         o.yres = sender->bins(), o.xres = 0;
     }
-    if (o.accumulate == 0) o.accumulate = sender ? kSenderRays : 1;
     std::vector<std::string> rcontrib{"rcontrib"};
     rcontrib.insert(rcontrib.end(), line->command.begin() + 1, line->command.end());
     std::erase(rcontrib, std::string("-v"));
+    // A sender's rows: -c rays each (10000 unless given), one per bin (-y), as Radiance's adds them.
+    if (o.accumulate == 0) {
+        o.accumulate = sender ? kSenderRays : 1;
+        if (sender) rcontrib.insert(rcontrib.end(), {"-c", std::to_string(o.accumulate)});
+    }
     for (const FluxReceiver& r : readReceivers(operands[1])) addReceiver(r, o, rcontrib);
+    if (sender) rcontrib.insert(rcontrib.end(), {"-y", std::to_string(sender->bins())});
     rcontrib.insert(rcontrib.end(), scene.begin(), scene.end());
     if (verbose) {
         std::cerr << programName() << ": running: " << shellLine(rcontrib) << "\n";

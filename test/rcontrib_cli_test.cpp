@@ -472,6 +472,12 @@ TEST(RfluxmtxCli, ASendersBinsReachTheSameBinsOfTheSky) {
         for (size_t r = 0; r < n; ++r)
             for (size_t col = 0; col < n; ++col) ASSERT_EQ(m[r][3 * col], r == col ? 1 : 0) << h << " row " << r << " column " << col;
     }
+    // -v says the rcontrib command as Radiance's rfluxmtx runs it: its -c (10000 by default) and a row per bin.
+    std::ofstream(c.dir / "sender.rad") << "#@rfluxmtx h=kq u=Y\nvoid polygon s 0 0 12 0 0 0  0 1 0  1 1 0  1 0 0\n";
+    Output v = brume_test::runBrume("rfluxmtx -v -ab 0 sender.rad sky.rad scene.rad", c.dir);
+    ASSERT_EQ(v.status, 0) << v.err;
+    EXPECT_NE(v.err.find("rfluxmtx: running: rcontrib -ab 0 -c 10000 -f reinhartb.cal"), std::string::npos) << v.err;
+    EXPECT_NE(v.err.find(" -m sky_glow -y 41 scene.rad sky.rad\nrfluxmtx: sampling 41 directions\n"), std::string::npos) << v.err;
 }
 
 // A sender of h=u sends its rays cosine-weighted: each of Reinhart's patches of an open sky takes the share
