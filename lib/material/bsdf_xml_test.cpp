@@ -40,10 +40,11 @@ protected:
                            .string();
     void TearDown() override { std::filesystem::remove(path); }
 
-    // A file with one distribution on a basis of 3 patches (a polar cap, two below it); `blocks` go first.
+    // A file with one distribution on a basis of 3 patches (a polar cap, two below it); `blocks` go first,
+    // `before` before the document.
     KlemsData read(const std::string& data, const std::string& structure = "Columns",
-                   const std::string& blocks = "") {
-        std::ofstream(path) << "<?xml version=\"1.0\"?>\n<WindowElement>\n<FileType>BSDF</FileType>\n<Optical><Layer>\n"
+                   const std::string& blocks = "", const std::string& before = "") {
+        std::ofstream(path) << before << "<?xml version=\"1.0\"?>\n<WindowElement>\n<FileType>BSDF</FileType>\n<Optical><Layer>\n"
                                "<DataDefinition><IncidentDataStructure>"
                             << structure
                             << "</IncidentDataStructure>\n<AngleBasis><AngleBasisName>Two</AngleBasisName>\n"
@@ -82,6 +83,17 @@ TEST_F(BsdfXmlText, SolarIsSkippedAndXyzGivesColour) {
     EXPECT_NEAR(d.transmitBack->rgb[0], 1, 1e-4);
     EXPECT_NEAR(d.transmitBack->rgb[1], 1, 1e-4);
     EXPECT_NEAR(d.transmitBack->rgb[2], 1, 1e-4);
+}
+
+// genBSDF's files may begin with its "Recover using" line (the LBNL tutorials' blinds.xml): skipped, as Radiance's
+// reader skips text before the first '<', and the lines still counted.
+TEST_F(BsdfXmlText, TextBeforeTheDocumentIsSkipped) {
+    const std::string recover = "Recover using: /usr/local/bin/genBSDF -recover /tmp/genBSDF.xMTbXO\n";
+    KlemsData d = read("1 2 3 4 5 6 7 8 9", "Columns", "", recover);
+    ASSERT_TRUE(d.transmitBack);
+    EXPECT_FLOAT_EQ(d.transmitBack->value(0, 1), 2);
+    EXPECT_EQ(errorOf([&] { read("1 2 3", "Columns", "", recover); }),
+              "w.xml:13: BSDF file: ScatteringData has 3 values, the bases need 9");
 }
 
 TEST_F(BsdfXmlText, BadFilesSayWhereAndWhat) {

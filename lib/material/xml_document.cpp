@@ -2,6 +2,7 @@
 
 #include <expat.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -11,6 +12,7 @@ namespace {
 
 struct Builder {
     XML_Parser parser;
+    int skippedLines = 0;  // lines before the document's first '<', which the parser does not see
     std::unique_ptr<XmlElement> root;
     std::vector<XmlElement*> open;
 };
@@ -19,7 +21,7 @@ void XMLCALL startElement(void* data, const XML_Char* name, const XML_Char**) {
     auto* b = static_cast<Builder*>(data);
     auto e = std::make_unique<XmlElement>();
     e->name = name;
-    e->line = int(XML_GetCurrentLineNumber(b->parser));
+    e->line = int(XML_GetCurrentLineNumber(b->parser)) + b->skippedLines;
     XmlElement* raw = e.get();
     if (b->open.empty()) b->root = std::move(e);
     else b->open.back()->children.push_back(std::move(e));
@@ -65,12 +67,17 @@ std::unique_ptr<XmlElement> readXmlFile(const std::string& path, const std::stri
     text << in.rdbuf();
     std::string s = text.str();
     Builder b;
+    // Text before the first '<' is skipped, as Radiance's XML reader skips it: genBSDF's files can begin with its
+    // "Recover using: genBSDF -recover …" line (the LBNL tutorials' blinds.xml does).
+    size_t start = std::min(s.find('<'), s.size());
+    b.skippedLines = int(std::count(s.begin(), s.begin() + std::ptrdiff_t(start), '\n'));
+    s.erase(0, start);
     b.parser = XML_ParserCreate(nullptr);
     XML_SetUserData(b.parser, &b);
     XML_SetElementHandler(b.parser, startElement, endElement);
     XML_SetCharacterDataHandler(b.parser, characters);
     bool ok = XML_Parse(b.parser, s.data(), int(s.size()), 1) == XML_STATUS_OK;
-    int line = int(XML_GetCurrentLineNumber(b.parser));
+    int line = int(XML_GetCurrentLineNumber(b.parser)) + b.skippedLines;
     std::string why = ok ? "" : XML_ErrorString(XML_GetErrorCode(b.parser));
     XML_ParserFree(b.parser);
     if (!ok) throw Error(SourceLocation{shownAs, line}, "malformed XML: " + why);
