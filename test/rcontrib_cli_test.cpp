@@ -534,7 +534,7 @@ TEST(RfluxmtxCli, TheThreePhaseMethodAgreesWithRadiance) {
 // A sender's hand, as Radiance's: the test room's window (window_d.rad) sends its bins' rays past a block off to
 // one side (block_aside.rad), h=-kq and h=kq; each bin's share of rays that pass (its row's sum at -ab 0) against
 // Radiance's (hand_reference.txt, -c 20000). The two hands differ by up to 0.99 in a bin; at -c 2000 a share spreads
-// by 0.011 at most, Radiance's by 0.0035: each within 0.06 (five of both).
+// by 0.011 at most, Radiance's by 0.0035: each within 0.06 (five of both). Its rows are the same on 1 and 2 threads.
 TEST(RfluxmtxCli, ASendersHandIsRadiances) {
     const fs::path flux = fs::path(BRUME_TEST_DATA) / "rfluxmtx";
     fs::path dir = brume_test::scratchDir("rfluxmtx_hand");
@@ -554,6 +554,13 @@ TEST(RfluxmtxCli, ASendersHandIsRadiances) {
         for (size_t b = 0; b < 41; ++b)
             EXPECT_NEAR(sumOfFirstComponents(m[b], 0, 146), (*reference)[b], 0.06) << file << " bin " << b;
     }
+    // A sender's rows are the same bytes on any number of threads at -u-.
+    std::string rest = " -h -u- -ab 1 -ad 16 -c 50 left.rad '" + (kData / "sky.rad").string() + "' '" +
+                       (flux / "block_aside.rad").string() + "'";
+    Output one = brume_test::runBrume("rfluxmtx -n 1" + rest, dir), two = brume_test::runBrume("rfluxmtx -n 2" + rest, dir);
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(rows("\n\n" + one.out).size(), 41u);
+    EXPECT_EQ(one.out, two.out);
 }
 
 // The image-based 3-phase method: the view matrix as a picture per window bin (-fac with -x and -y), which
