@@ -1,8 +1,11 @@
 // dctimestep: daylight coefficients times sky vectors or matrices (DC × sky, or V × T × D × sky; DC or V as a
 // picture per bin, summed into pictures), as Radiance's dctimestep (see man/dctimestep.1).
 #include <cstdio>
+#include <functional>
+#include <sstream>
 #include <memory>
 
+#include "io/picture.h"
 #include "matrix/component_pictures.h"
 #include "matrix/matrix_file.h"
 #include "util/error.h"
@@ -71,6 +74,24 @@ void write(std::FILE* out, Matrix m, const Options& o, std::vector<std::string> 
     writeMatrix(out, m, o.format, AsciiLayout::Dctimestep, lines, o.header);
 }
 
+// Pictures of several time steps one after another in one stream, as Radiance's dctimestep writes them: the header
+// once, then each frame's FRAME= line, FORMAT= and pixels.
+void writeFrames(std::FILE* out, int steps, const std::function<Matrix(int)>& frame, const std::vector<std::string>& lines,
+                 bool header) {
+    for (int c = 0; c < steps; ++c) {
+        Matrix m = frame(c);
+        Picture p;
+        p.width = m.cols, p.height = m.rows;
+        p.pixels = std::move(m.values);
+        if (c == 0 && header) p.header = lines;
+        p.header.push_back("FRAME=" + std::to_string(c));
+        std::ostringstream bytes;
+        writeRadiancePicture(bytes, p, c > 0 || !header);
+        std::string s = bytes.str();
+        if (std::fwrite(s.data(), 1, s.size(), out) != s.size()) throw Error("write error");
+    }
+}
+
 int run(int argc, char** argv) {
     Options o;
     OptionTable table = makeTable(o);
@@ -106,14 +127,19 @@ int run(int argc, char** argv) {
         }
         return 0;
     }
-    if (weights.cols > 1 && (pictures || (o.format == MatrixFormat::Rgbe && (o.xres > 0 || o.yres > 0))))
-        throw Error("pictures of several time steps are one per step: give -o with %d");
+    if (weights.cols > 1 && !pictures && o.format == MatrixFormat::Rgbe && (o.xres > 0 || o.yres > 0))
+        throw Error("-oc with -x/-y makes one picture per time step: give -o with %d");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{nullptr, std::fclose};
     if (!o.outputSpec.empty()) {
         f.reset(std::fopen(o.outputSpec.c_str(), "wb"));
         if (!f) throw Error("cannot open '" + o.outputSpec + "' for output");
     }
-    write(f ? f.get() : stdout, pictures ? frame(0) : std::move(result), o, lines);
+    std::FILE* out = f ? f.get() : stdout;
+    if (pictures && weights.cols > 1) {
+        writeFrames(out, weights.cols, frame, lines, o.header);
+        return 0;
+    }
+    write(out, pictures ? frame(0) : std::move(result), o, lines);
     return 0;
 }
 

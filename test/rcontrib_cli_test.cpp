@@ -581,7 +581,9 @@ TEST(RfluxmtxCli, PicturesPerBinSumToTheViewMatrixsValues) {
         std::ofstream sky(dir / (steps == 1 ? "sky.vec" : "sky2.vec"));
         sky << "#?RADIANCE\nNROWS=146\nNCOLS=" << steps << "\nNCOMP=3\nFORMAT=ascii\n\n";
         for (int p = 0; p < 146; ++p)
-            for (int t = 0; t < steps; ++t) sky << 10 + p % 7 << " " << 11 + p % 5 << " " << 12 + p % 3 << (t + 1 < steps ? "\t" : "\n");
+            for (int t = 0; t < steps; ++t)  // the second step half the first
+                sky << (10 + p % 7) / (t + 1.0) << " " << (11 + p % 5) / (t + 1.0) << " " << (12 + p % 3) / (t + 1.0)
+                    << (t + 1 < steps ? "\t" : "\n");
     }
     const std::string xml = "'" + (fs::path(BRUME_TEST_DATA) / "bsdf" / "prism_quarter.xml").string() + "'";
     Output o = brume_test::runBrume(
@@ -609,13 +611,24 @@ TEST(RfluxmtxCli, PicturesPerBinSumToTheViewMatrixsValues) {
         {"dctimestep 'missing%03d.hdr' " + xml + " d.mtx sky.vec", "missing000.hdr"},
         {"dctimestep 'w%03d_%s.hdr' " + xml + " d.mtx sky.vec", "a picture pattern takes one %d (the bin) and %% only"},
         {"dctimestep 'w%03d.hdr' " + xml + " d.mtx 'w%03d.hdr'", "only the first matrix may be pictures by bin"},
-        {"dctimestep 'w%03d.hdr' " + xml + " d.mtx sky2.vec", "pictures of several time steps are one per step: give -o with %d"},
     };
     for (const Refusal& r : refusals) {
         Output bad = brume_test::runBrume(r.line, dir);
         EXPECT_NE(bad.status, 0) << r.line;
         EXPECT_NE(bad.err.find(r.message), std::string::npos) << r.line << ": " << bad.err;
     }
+    // Two time steps: a picture each, in files (-o with %d) or one after another in one stream, FRAME= in each.
+    Output steps = brume_test::runBrume("dctimestep -o 'f%d.hdr' 'w%03d.hdr' " + xml + " d.mtx sky2.vec && "
+                                        "dctimestep 'w%03d.hdr' " + xml + " d.mtx sky2.vec", dir);
+    ASSERT_EQ(steps.status, 0) << steps.err;
+    brume::Picture first = brume::readPicture((dir / "f0.hdr").string()), second = brume::readPicture((dir / "f1.hdr").string());
+    for (size_t i = 0; i < first.pixels.size(); ++i)
+        EXPECT_NEAR(second.pixels[i], first.pixels[i] / 2, 0.01 * first.pixels[i]) << i;
+    EXPECT_NE(slurp(dir / "f1.hdr").find("FRAME=1\n"), std::string::npos);
+    size_t frame0 = steps.out.find("FRAME=0\nFORMAT=32-bit_rle_rgbe\n\n-Y        3 +X        4\n");
+    size_t frame1 = steps.out.find("FRAME=1\nFORMAT=32-bit_rle_rgbe\n\n-Y        3 +X        4\n");
+    EXPECT_TRUE(frame0 != std::string::npos && frame1 != std::string::npos && frame0 < frame1);
+    EXPECT_EQ(steps.out.rfind("#?RADIANCE"), 0u);  // one header
 }
 
 // Honeybee's 2-phase annual run (rfluxmtx with its sky.dome, rmtxop times gendaymtx's sky, to lux) on 16 sensors
