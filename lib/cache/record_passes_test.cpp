@@ -15,7 +15,7 @@ namespace {
 // Requests on a floor 0.6 m apart (each in a region of its own: accept() takes them all), and records made
 // there of zones `radius` wide; how many records were made.
 size_t recordsMade(float radius) {
-    SurfaceCache cache(SurfaceZones(RecordShape{}), dvec3(0), false);
+    SurfaceCache cache(SurfaceZones(RecordShape{}), dvec3(0), InstantKeys(false));
     std::vector<RecordRequest> requests;
     for (int i = 0; i < 200; ++i)
         requests.push_back({Receiver{dvec3(0.6 * i, 0, 0), dvec3(0, 0, 1), 0, 0}, {}, 1, uint64_t(i)});

@@ -1,5 +1,5 @@
 // The records of one kind (surface or volume records) at the instants in use, each instant's
-// in a RecordLayer of its own: where the scene changes in time (`timed`) a record holds the light of its own
+// in a RecordLayer of its own: where the scene changes in time (InstantKeys) a record holds the light of its own
 // instant only, and lookups, misses and splotch control never mix instants; where nothing changes, one layer
 // serves every instant.
 //
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cache/record_layer.h"
+#include "medium/instant_keys.h"
 
 namespace brume {
 
@@ -24,7 +25,8 @@ public:
     using Record = typename Kind::Record;
 
     // Regions and zone boxes are measured from `origin` (the scene's).
-    RecordStore(Kind kind, const dvec3& origin, bool timed) : kind_(std::move(kind)), origin_(origin), timed_(timed) {}
+    RecordStore(Kind kind, const dvec3& origin, InstantKeys instants)
+        : kind_(std::move(kind)), origin_(origin), instants_(instants) {}
     RecordStore(const RecordStore&) = delete;
     RecordStore& operator=(const RecordStore&) = delete;
 
@@ -81,7 +83,7 @@ public:
     }
     // Forgets the records of every instant but `time` (a sequence that has moved on to it).
     void keepOnly(double time) {
-        if (timed_) std::erase_if(layers_, [&](const auto& entry) { return entry.first != time; });
+        std::erase_if(layers_, [&](const auto& entry) { return !instants_.keptAt(entry.first, time); });
     }
 
     // The records of instant `time`, in their order.
@@ -119,7 +121,7 @@ public:
 private:
     using Layer = RecordLayer<Kind>;
 
-    double key(double time) const { return timed_ ? time : 0.0; }
+    double key(double time) const { return instants_.of(time); }
     // Few instants are in use at once (a sequence keeps one): a short list, searched from the front.
     const Layer* layerAt(double time) const {
         auto it = std::find_if(layers_.begin(), layers_.end(), [k = key(time)](const auto& e) { return e.first == k; });
@@ -139,7 +141,7 @@ private:
 
     Kind kind_;
     dvec3 origin_;
-    bool timed_;
+    InstantKeys instants_;
     std::vector<std::pair<double, std::unique_ptr<Layer>>> layers_;
 };
 

@@ -16,7 +16,7 @@ RecordShape shape() {
     return s;
 }
 
-SurfaceCache cacheOf(bool timed = false) { return SurfaceCache(SurfaceZones(shape()), dvec3(0), timed); }
+SurfaceCache cacheOf(bool timed = false) { return SurfaceCache(SurfaceZones(shape()), dvec3(0), InstantKeys(timed)); }
 
 Receiver at(const dvec3& p, const dvec3& n = dvec3(0, 0, 1), int level = 0, double time = 0) { return {p, n, level, time}; }
 

@@ -30,7 +30,7 @@ RenderSettings cached(int ad = 64) {
 
 // A cache of the settings' accuracy (its other bounds matter little here).
 struct Cache {
-    SurfaceCache store{SurfaceZones(RecordShape{}), dvec3(0), false};
+    SurfaceCache store{SurfaceZones(RecordShape{}), dvec3(0), InstantKeys(false)};
 };
 
 // A floor point, looked up by a path of weight .3 through a lobe of coefficient 1 at diffuse bounce 0, instant
@@ -171,7 +171,7 @@ TEST(CacheClient, ASurfaceRecordsPassesFollowItsStandardErrorAgainstAllItsLight)
 // 2L at random, the first pass's relative error is about 1/√64 = 12 %, four times and more the 3 % -aa .1
 // asks for: four passes in all, -ad rays. Deeper records make one pass of all their rays.
 TEST(CacheClient, AVolumeRecordsPassesFollowItsStandardError) {
-    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), false};
+    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), InstantKeys(false)};
     Parts parts(kFloor, cached(256), nullptr, &volumes);
     RecordRequest q{Receiver{dvec3(0, 0, 1), std::nullopt, 0, 0.0}, SurfaceId{}, 1, 9};
     auto rays = [&](int level) {
@@ -215,7 +215,7 @@ TEST(CacheClient, AVolumeRecordsZoneStopsWhereItsEdgeNeedsIt) {
     auto grid = brume::medium::testing::boxGrid({0, 0, 0}, {99, 99, 99}, 1.0f, 0.1);
     grid->tree().fill(openvdb::CoordBBox(openvdb::Coord(50, 0, 0), openvdb::Coord(99, 99, 99)), 20.0f, true);
     brume::medium::testing::writeGrid(dir.path() / "step.vdb", grid);
-    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), false};
+    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), InstantKeys(false)};
     auto radius = [&](const std::string& scene, const dvec3& p) {
         Parts parts(scene + "void smoke s 1 step.vdb 0 3 1 1 1\n", cached(64), nullptr, &volumes);
         parts.tracer.value = Spectrum(kL);

@@ -7,25 +7,25 @@
 namespace brume {
 
 Media::Media(const RenderScene& scene, const RenderSettings& settings)
-    : scene_(scene), majorantCell_(settings.majorantCell), timed_(scene.variesInTime()), global_(settings.medium) {
+    : scene_(scene), majorantCell_(settings.majorantCell), instants_(scene.variesInTime()), global_(settings.medium) {
     present_ = !global_.clear() || scene.hasMists() || !scene.smoke().empty();
 }
 
 void Media::prepare(double time) {
-    double key = timed_ ? time : 0.0;
-    if (instants_.count(key)) return;
+    double key = instants_.of(time);
+    if (smoke_.count(key)) return;
     std::vector<SmokeVolume> smoke;
     for (const SmokeDescription& d : scene_.smoke()) smoke.emplace_back(d, time, majorantCell_);
-    instants_.emplace(key, ParticipatingMedia(std::move(smoke)));
+    smoke_.emplace(key, ParticipatingMedia(std::move(smoke)));
 }
 
 void Media::keepOnly(double time) {
-    if (timed_) std::erase_if(instants_, [&](const auto& entry) { return entry.first != time; });
+    std::erase_if(smoke_, [&](const auto& entry) { return !instants_.keptAt(entry.first, time); });
 }
 
 const ParticipatingMedia& Media::smokeAt(double time) const {
-    auto it = instants_.find(timed_ ? time : 0.0);
-    if (it == instants_.end()) throw std::logic_error("the smoke at an instant not prepared");
+    auto it = smoke_.find(instants_.of(time));
+    if (it == smoke_.end()) throw std::logic_error("the smoke at an instant not prepared");
     return it->second;
 }
 

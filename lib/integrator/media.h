@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "integrator/path_state.h"
+#include "medium/instant_keys.h"
 #include "medium/participating_media.h"
 #include "world/render_scene.h"
 
@@ -41,10 +42,10 @@ public:
 private:
     const RenderScene& scene_;
     int majorantCell_;
-    bool timed_;  // the smoke changes in time: one ParticipatingMedia per instant, else one for all
+    InstantKeys instants_;  // one ParticipatingMedia per instant where the smoke changes in time, else one for all
     HomogeneousMedium global_;
     bool present_;
-    std::map<double, ParticipatingMedia> instants_;
+    std::map<double, ParticipatingMedia> smoke_;  // by InstantKeys::of
 };
 
 }  // namespace brume

@@ -18,14 +18,14 @@ constexpr int kMaxPasses = 24;  // then items take what paths give where records
 std::unique_ptr<SurfaceCache> makeCache(const RenderScene& scene, const RenderSettings& settings) {
     if (!settings.usesCache()) return nullptr;
     return std::make_unique<SurfaceCache>(SurfaceZones(recordShape(scene, settings)), scene.geometry().origin(),
-                                          scene.variesInTime());
+                                          InstantKeys(scene.variesInTime()));
 }
 
 // Only where some medium is (else no volume records, no cost).
 std::unique_ptr<VolumeCache> makeVolumeCache(const RenderScene& scene, const RenderSettings& settings) {
     if (!settings.usesCache() || (settings.medium.clear() && !scene.hasMists() && scene.smoke().empty())) return nullptr;
     return std::make_unique<VolumeCache>(VolumeZones(recordShape(scene, settings)), scene.geometry().origin(),
-                                         scene.variesInTime());
+                                         InstantKeys(scene.variesInTime()));
 }
 
 std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings, SurfaceCache* cache,
