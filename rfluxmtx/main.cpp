@@ -4,11 +4,11 @@
 // a row for each sender bin.
 #include <iostream>
 #include <optional>
-#include <random>
 
 #include "contrib/contribution_run.h"
 #include "contrib/receivers.h"
 #include "contrib/senders.h"
+#include "integrator/settings.h"
 #include "io/ray_reader.h"
 #include "util/error.h"
 #include "util/header.h"
@@ -48,11 +48,6 @@ struct SenderRays {
         return true;
     }
 };
-
-// Seeded as the tracer is: anew each run, or -u-'s.
-uint64_t senderSeed(const RenderSettings& settings) {
-    return settings.randomSampling ? (uint64_t(std::random_device{}()) << 32) ^ std::random_device{}() : settings.seed;
-}
 
 int run(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
@@ -101,7 +96,7 @@ int run(int argc, char** argv) {
     std::vector<std::string> command = line->command;
     command.insert(command.end(), operands.begin(), operands.end());
     if (sender) {
-        runContributions(o, scene, command, SenderRays{*sender, o.accumulate, senderSeed(o.render)});
+        runContributions(o, scene, command, SenderRays{*sender, o.accumulate, runSeed(o.render)});
     } else {
         RayReader reader(std::cin, o.inFormat, "(stdin)");
         runContributions(o, scene, command, [&](std::array<double, 6>& r) { return reader.next(r); });

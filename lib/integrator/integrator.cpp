@@ -2,7 +2,6 @@
 // hit is shaded, and how sources that sampled rays meet are counted against next-event estimation.
 #include "integrator/integrator.h"
 
-#include <chrono>
 #include <cmath>
 #include <glm/gtx/component_wise.hpp>
 
@@ -16,12 +15,6 @@ namespace {
 // Sources smaller than this (sr; a cone of 0.05 rad, the sun's is 6.8e-5) that a path meets only through a specular
 // bounce after a diffuse one are met by chance: see foundByChance.
 constexpr double kChanceSolidAngle = 2e-3;
-
-uint64_t runSeed(const RenderSettings& settings) {
-    return settings.randomSampling
-               ? mixBits(static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()))
-               : settings.seed;
-}
 
 }  // namespace
 

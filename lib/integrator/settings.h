@@ -58,5 +58,7 @@ struct RenderSettings {
 // The settings as light transport uses them: the colours given in RGB (-av, -me, -ma) lifted to the
 // sampling's bands (smooth spectra; greys stay flat).
 RenderSettings inBands(RenderSettings settings);
+// The seed a run's samples start from: -u-'s, or one of its own for each run (-u+).
+uint64_t runSeed(const RenderSettings& settings);
 
 }  // namespace brume
