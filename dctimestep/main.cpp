@@ -2,10 +2,8 @@
 // picture per bin, summed into pictures), as Radiance's dctimestep (see man/dctimestep.1).
 #include <cstdio>
 #include <functional>
-#include <sstream>
 #include <memory>
 
-#include "io/picture.h"
 #include "matrix/component_pictures.h"
 #include "matrix/matrix_file.h"
 #include "util/error.h"
@@ -79,16 +77,10 @@ void write(std::FILE* out, Matrix m, const Options& o, std::vector<std::string> 
 void writeFrames(std::FILE* out, int steps, const std::function<Matrix(int)>& frame, const std::vector<std::string>& lines,
                  bool header) {
     for (int c = 0; c < steps; ++c) {
-        Matrix m = frame(c);
-        Picture p;
-        p.width = m.cols, p.height = m.rows;
-        p.pixels = std::move(m.values);
-        if (c == 0 && header) p.header = lines;
-        p.header.push_back("FRAME=" + std::to_string(c));
-        std::ostringstream bytes;
-        writeRadiancePicture(bytes, p, c > 0 || !header);
-        std::string s = bytes.str();
-        if (std::fwrite(s.data(), 1, s.size(), out) != s.size()) throw Error("write error");
+        bool first = c == 0 && header;
+        std::vector<std::string> named = first ? lines : std::vector<std::string>{};
+        named.push_back("FRAME=" + std::to_string(c));
+        writePicture(out, frame(c), named, first ? PictureHeader::Whole : PictureHeader::LaterFrame);
     }
 }
 

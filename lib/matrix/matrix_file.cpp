@@ -236,23 +236,29 @@ Matrix readMatrix(const std::string& spec, const MatrixShape& shape, MatrixForma
     return parseMatrix(inputBytes(spec), spec == "-" ? "<stdin>" : spec, shape, stored);
 }
 
+void writePicture(std::FILE* out, const Matrix& m, const std::vector<std::string>& lines, PictureHeader header) {
+    requireFinite(m, "the result");
+    if (m.comps != 3) throw Error("a picture needs 3 components, not " + std::to_string(m.comps));
+    Picture p;
+    p.width = m.cols, p.height = m.rows;
+    p.pixels = m.values;
+    p.header = lines;
+    std::ostringstream bytes;
+    writeRadiancePicture(bytes, p, header == PictureHeader::LaterFrame);
+    std::string s = bytes.str();
+    if (header == PictureHeader::None) s = s.substr(s.find("\n\n") + 2);
+    std::fwrite(s.data(), 1, s.size(), out);
+}
+
 void writeMatrix(std::FILE* out, const Matrix& m, MatrixFormat format, AsciiLayout layout,
                  const std::vector<std::string>& lines, bool header) {
-    requireFinite(m, "the result");
     if (format == MatrixFormat::Rgbe) {
-        if (m.comps != 3) throw Error("a picture needs 3 components, not " + std::to_string(m.comps));
-        Picture p;
-        p.width = m.cols, p.height = m.rows;
-        p.pixels = m.values;
-        p.header = lines;
-        p.header.insert(p.header.end(), m.info.begin(), m.info.end());
-        std::ostringstream bytes;
-        writeRadiancePicture(bytes, p);
-        std::string s = bytes.str();
-        if (!header) s = s.substr(s.find("\n\n") + 2);
-        std::fwrite(s.data(), 1, s.size(), out);
+        std::vector<std::string> all = lines;
+        all.insert(all.end(), m.info.begin(), m.info.end());
+        writePicture(out, m, header ? all : std::vector<std::string>{}, header ? PictureHeader::Whole : PictureHeader::None);
         return;
     }
+    requireFinite(m, "the result");
     if (header) {
         std::string h = "#?RADIANCE\n";
         for (const std::string& line : lines) h += line + "\n";

@@ -36,6 +36,13 @@ Matrix parseMatrix(const std::string& bytes, const std::string& name, const Matr
 // dctimestep's ("%.6e" components apart by spaces, elements by tabs).
 enum class AsciiLayout { Rmtxop, Dctimestep };
 
+// How much of a picture's header writePicture writes: all of it, a later frame's of a stream of frames (without
+// "#?RADIANCE": its lines continue the first frame's), or none (the resolution line and the pixels).
+enum class PictureHeader { Whole, LaterFrame, None };
+// A matrix of 3 components as an RGBE picture, its rows from the top, `lines` in its header. Throws Error,
+// writing nothing, where a value is not finite or the matrix is not RGB.
+void writePicture(std::FILE* out, const Matrix& m, const std::vector<std::string>& lines, PictureHeader header);
+
 // Writes the header (unless `header` is false): "#?RADIANCE", `lines` (the command and the like), the
 // matrix's info, its size, BigEndian= for binary values, FORMAT=; then the elements. Throws Error, writing
 // nothing, where a value is not finite (an overflow).
