@@ -10,23 +10,26 @@ namespace brume {
 
 namespace {
 
-// The pattern's one integer conversion (%d, %03d, %i), and nothing but %% besides; else Error.
-void checkPattern(const std::string& pattern) {
-    int conversions = 0;
+// The conversions of a printf pattern: integer ones (%d, %03d, %i) and any other (but %%).
+struct Conversions {
+    int integers = 0, others = 0;
+};
+
+Conversions conversionsOf(const std::string& pattern) {
+    Conversions c;
     for (size_t i = 0; i < pattern.size(); ++i) {
         if (pattern[i] != '%') continue;
         size_t j = i + 1;
-        if (j < pattern.size() && pattern[j] == '%') {
+        while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
+        if (j < pattern.size() && pattern[j] == '%' && j == i + 1) {
             i = j;
             continue;
         }
-        while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
-        if (j == pattern.size() || (pattern[j] != 'd' && pattern[j] != 'i'))
-            throw Error(pattern + ": a picture pattern takes one %d (the bin) and %% only");
-        ++conversions;
+        bool integer = j < pattern.size() && (pattern[j] == 'd' || pattern[j] == 'i');
+        (integer ? c.integers : c.others) += 1;
         i = j;
     }
-    if (conversions != 1) throw Error(pattern + ": a picture pattern takes one %d (the bin)");
+    return c;
 }
 
 std::string nameOf(const std::string& pattern, int bin) {
@@ -37,19 +40,11 @@ std::string nameOf(const std::string& pattern, int bin) {
 
 }  // namespace
 
-bool namesComponentPictures(const std::string& spec) {
-    for (size_t i = 0; i < spec.size(); ++i) {
-        if (spec[i] != '%') continue;
-        size_t j = i + 1;
-        while (j < spec.size() && std::isdigit(static_cast<unsigned char>(spec[j]))) ++j;
-        if (j < spec.size() && (spec[j] == 'd' || spec[j] == 'i')) return true;
-        if (j < spec.size() && spec[j] == '%') i = j;
-    }
-    return false;
-}
+bool namesComponentPictures(const std::string& spec) { return conversionsOf(spec).integers > 0; }
 
 Matrix sumComponentPictures(const std::string& pattern, const Matrix& weights, int step) {
-    checkPattern(pattern);
+    Conversions c = conversionsOf(pattern);
+    if (c.integers != 1 || c.others != 0) throw Error(pattern + ": a picture pattern takes one %d (the bin) and %% only");
     Matrix sum;
     for (int b = 0; b < weights.rows; ++b) {
         const float* w = weights.at(b, step);
