@@ -74,8 +74,6 @@ void addReceiver(const FluxReceiver& r, ContributionRun& run, std::vector<std::s
         run.next.binCount = "1";
         run.next.bin = r.sources ? "0" : "if(-Dx*" + formatShort(n.x) + "-Dy*" + formatShort(n.y) + "-Dz*" + formatShort(n.z) + ",0,-1)";
     } else if (kind == 'r' || kind == 't') {
-        if (!r.narrowSources.empty())
-            throw Error("source '" + r.narrowSources.front() + "' must be 180-degrees");
         load(run, "reinhartb.cal", words);
         run.next.parameters = "MF=" + std::to_string(r.settings.size) + ",rNx=" + formatShort(n.x) + ",rNy=" + formatShort(n.y) +
                               ",rNz=" + formatShort(n.z) + ",Ux=" + formatShort(up.x) + ",Uy=" + formatShort(up.y) +
@@ -84,8 +82,6 @@ void addReceiver(const FluxReceiver& r, ContributionRun& run, std::vector<std::s
         run.next.bin = "rbin";
         words.insert(words.end(), {"-p", run.next.parameters});
     } else if (const KlemsBins* k = klemsBins(r.settings.hemisphere)) {
-        if (!r.narrowSources.empty())
-            throw Error("source '" + r.narrowSources.front() + "' must be 180-degrees");
         load(run, k->file, words);
         run.next.parameters = std::string("RHS=") + r.settings.sign + "1";
         run.next.binCount = k->count;
@@ -96,6 +92,9 @@ void addReceiver(const FluxReceiver& r, ContributionRun& run, std::vector<std::s
         throw Error("receiver '" + r.modifier + "': hemisphere sampling h=" + r.settings.hemisphere +
                     " is not supported yet (Brume has u, r, t and kf, kh, kq)");
     }
+    // Bins over a hemisphere take a whole one: a narrower source would leave bins empty unsaid (Radiance's rule).
+    if (kind != 'u' && kind != '1' && !r.narrowSources.empty())
+        throw Error("source '" + r.narrowSources.front() + "' must be 180-degrees");
     words.insert(words.end(), {"-bn", run.next.binCount, "-b", run.next.bin, "-m", r.modifier});
     run.addModifier(r.modifier);
 }
