@@ -611,6 +611,9 @@ TEST(RfluxmtxCli, PicturesPerBinSumToTheViewMatrixsValues) {
         {"dctimestep 'missing%03d.hdr' " + xml + " d.mtx sky.vec", "missing000.hdr"},
         {"dctimestep 'w%03d_%s.hdr' " + xml + " d.mtx sky.vec", "a picture pattern takes one %d (the bin) and %% only"},
         {"dctimestep 'w%03d.hdr' " + xml + " d.mtx 'w%03d.hdr'", "only the first matrix may be pictures by bin"},
+        {"cp w000.hdr m000.hdr && rfluxmtx -u- -fac -x 2 -y 6 -ab 0 -o 'small%03d.hdr' - window_v.rad room.rad < rays.txt && "
+         "for b in $(seq -w 1 40); do cp small0$b.hdr m0$b.hdr; done && dctimestep 'm%03d.hdr' " + xml + " d.mtx sky.vec",
+         "m001.hdr: 2 by 6, not 4 by 3 as the first picture"},
     };
     for (const Refusal& r : refusals) {
         Output bad = brume_test::runBrume(r.line, dir);

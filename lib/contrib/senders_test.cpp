@@ -148,6 +148,9 @@ TEST(Senders, BadSendersAreRefused) {
         {"#@rfluxmtx h=sc4\nvoid polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "h=sc4 is not supported"},
         {"#@rfluxmtx h=kf u=Z\nvoid polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "up vector coincides with sender normal"},
         {"#@rfluxmtx h=kf\nvoid sphere b 0 0 4 0 0 0 1\n", "no sender surface"},
+        {"#@rfluxmtx h=kf\nvoid polygon bow 0 0 12 0 0 0  3 1 0  3 0 0  0 2 0\n", "cannot sample sender polygon 'bow'"},
+        {"#@rfluxmtx h=r101\nvoid polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n", "more than 100 subdivisions"},
+        {"#@rfluxmtx h=kf\nvoid polygon big 0 0 9 0 0 0 1e300 0 0 0 1e300 0\n", "sender.rad:2: surface element 'big' too large to measure"},
     };
     for (const Bad& b : cases) {
         try {
