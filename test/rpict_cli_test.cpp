@@ -230,8 +230,9 @@ TEST_F(RpictCli, SpectralPicturesHoldEveryBand) {
 }
 
 // Smoke that changes in time (key frames at 0 and 10 s), a sequence of frames at 0, 10 and 0 s through the
-// irradiance cache: with -af, one file keeps the records of both instants, each serving frames at its own
-// instant only, and the pictures are those rendered without a file, bit for bit (a file changes no value).
+// irradiance cache: with -af, one file keeps the records of both windows of time (from 0 s, and 10 s, the
+// last instant with data, alone), and the pictures are those rendered without a file, bit for bit (a file
+// changes no value).
 TEST_F(RpictCli, OneCacheFileServesFramesAtSeveralInstants) {
     using namespace brume::medium::testing;
     writeGrid(dir() / "thin.vdb", boxGrid({-20, -20, 0}, {20, 20, 20}, 0.1f, 0.1));

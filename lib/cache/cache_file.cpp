@@ -29,7 +29,7 @@ static_assert(std::endian::native == std::endian::little && std::numeric_limits<
 namespace {
 
 constexpr std::string_view kMagic = "#?BRUME_IRRADIANCE_CACHE";
-constexpr std::string_view kFormat = "brume_irradiance_cache 3";
+constexpr std::string_view kFormat = "brume_irradiance_cache 4";
 constexpr char kSurfaceTag[4] = {'S', 'U', 'R', 'F'};  // a block of surface records
 constexpr char kVolumeTag[4] = {'V', 'O', 'L', 'U'};   // a block of volume records
 // A volume record holds at most this many peaks (buildVolumeRecord keeps 32, and up to 36 per source); more
@@ -121,11 +121,22 @@ std::string headerText(const CacheIdentity& id) {
 bool finite(const dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool unit(const dvec3& v) { return std::abs(glm::length(v) - 1) < 1e-6; }
 
+// Why a record's time may not be cached: a window of time that holds its instant, with its records' spacing
+// (every instant: infinite window and spacing; one instant: no window, no spacing).
+const char* invalidity(const RecordTime& t) {
+    if (!std::isfinite(t.at)) return "its instant is not finite";
+    if (t.from == t.to ? t.from != t.at || t.spacing != 0
+                       : !(t.from <= t.at && t.at <= t.to) || !(t.spacing > 0) ||
+                             (std::isinf(t.spacing) != (std::isinf(t.from) && std::isinf(t.to))))
+        return "its window of time is invalid";
+    return nullptr;
+}
+
 // Why a record may not be cached (its numbers would reach the renderer), or null.
 const char* invalidity(const SurfaceRecord& r, int channels) {
     if (r.values.size() != size_t(SurfaceRecord::kFields) * channels) return "wrong number of values";
     if (!finite(r.point) || !finite(r.normal) || !finite(r.axis)) return "a coordinate is not finite";
-    if (!std::isfinite(r.time)) return "its time is not finite";
+    if (const char* why = invalidity(r.when)) return why;
     if (!unit(r.normal) || !unit(r.axis)) return "its normal or axis is not a unit vector";
     for (float radius : r.radius)
         if (!(radius > 0) || !std::isfinite(radius)) return "a radius is not positive";
@@ -141,7 +152,7 @@ const char* invalidity(const VolumeRecord& r, int channels) {
     if (r.peaks() > kMaxPeaks) return "too many peaks";
     if (r.sourcePeaks < 0 || r.sourcePeaks > r.peaks()) return "its sources' peaks are not among its peaks";
     if (!finite(r.point)) return "a coordinate is not finite";
-    if (!std::isfinite(r.time)) return "its time is not finite";
+    if (const char* why = invalidity(r.when)) return why;
     if (!(r.radius > 0) || !std::isfinite(r.radius)) return "its radius is not positive";
     if (r.level < 0) return "its level is negative";
     for (float v : r.values)
@@ -168,10 +179,20 @@ T get(const char*& p) {
     return value;
 }
 
+void putTime(char*& p, const RecordTime& t) {
+    for (double v : {t.at, t.from, t.to, t.spacing}) put(p, v);
+}
+
+RecordTime getTime(const char*& p) {
+    RecordTime t;
+    for (double* v : {&t.at, &t.from, &t.to, &t.spacing}) *v = get<double>(p);
+    return t;
+}
+
 void putRecord(char*& p, const SurfaceRecord& r) {
     for (const dvec3* v : {&r.point, &r.normal, &r.axis})
         for (int i = 0; i < 3; ++i) put(p, (*v)[i]);
-    put(p, r.time);
+    putTime(p, r.when);
     put(p, r.radius[0]);
     put(p, r.radius[1]);
     put(p, int32_t(r.level));
@@ -182,7 +203,7 @@ SurfaceRecord getRecord(const char*& p, int channels) {
     SurfaceRecord r;
     for (dvec3* v : {&r.point, &r.normal, &r.axis})
         for (int i = 0; i < 3; ++i) (*v)[i] = get<double>(p);
-    r.time = get<double>(p);
+    r.when = getTime(p);
     r.radius[0] = get<float>(p);
     r.radius[1] = get<float>(p);
     r.level = get<int32_t>(p);
@@ -191,9 +212,9 @@ SurfaceRecord getRecord(const char*& p, int channels) {
     return r;
 }
 
-// A volume record's point, instant, radius, level, number of peaks and of the sources' among them; then its
+// A volume record's point, time, radius, level, number of peaks and of the sources' among them; then its
 // values.
-constexpr size_t kVolumeRecordHead = 4 * sizeof(double) + sizeof(float) + 3 * sizeof(int32_t);
+constexpr size_t kVolumeRecordHead = 7 * sizeof(double) + sizeof(float) + 3 * sizeof(int32_t);
 
 size_t volumeRecordSize(int peaks, int channels) {
     return kVolumeRecordHead +
@@ -202,7 +223,7 @@ size_t volumeRecordSize(int peaks, int channels) {
 
 void putRecord(char*& p, const VolumeRecord& r) {
     for (int i = 0; i < 3; ++i) put(p, r.point[i]);
-    put(p, r.time);
+    putTime(p, r.when);
     put(p, r.radius);
     put(p, int32_t(r.level));
     put(p, int32_t(r.peaks()));
@@ -218,7 +239,7 @@ std::optional<VolumeRecord> getVolumeRecord(const char*& p, const char* end, int
     if (size_t(end - p) < kVolumeRecordHead) return std::nullopt;
     VolumeRecord r;
     for (int i = 0; i < 3; ++i) r.point[i] = get<double>(p);
-    r.time = get<double>(p);
+    r.when = getTime(p);
     r.radius = get<float>(p);
     r.level = get<int32_t>(p);
     int32_t peaks = get<int32_t>(p);
@@ -272,7 +293,7 @@ std::optional<BlockHead> getHead(const char* p) {
 
 CacheFile::CacheFile(std::string path, CacheIdentity identity)
     : path_(std::move(path)), identity_(std::move(identity)),
-      recordSize_(10 * sizeof(double) + 2 * sizeof(float) + sizeof(int32_t) +
+      recordSize_(13 * sizeof(double) + 2 * sizeof(float) + sizeof(int32_t) +
                   size_t(SurfaceRecord::kFields) * identity_.channels * sizeof(float)) {
     std::string header = headerText(identity_);
     fd_ = open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
@@ -345,6 +366,8 @@ void CacheFile::checkHeader() {
     if (fields["FORMAT"] == "brume_irradiance_cache 2")
         refuse("was made by an earlier Brume (cache format 2, whose volume records hold no light straight from the "
                "sources)");
+    if (fields["FORMAT"] == "brume_irradiance_cache 3")
+        refuse("was made by an earlier Brume (cache format 3, whose records hold one instant, not a window of them)");
     if (fields["FORMAT"] != kFormat) refuse("has another format (FORMAT=" + shown(fields["FORMAT"]) + ")");
     if (fields["SCENE"] != identity_.scene)
         refuse("was made for another scene (its SCENE= differs: the scene or a file it reads has changed)");

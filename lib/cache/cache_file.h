@@ -3,20 +3,20 @@
 //
 // A text header, ended by an empty line:
 //     #?BRUME_IRRADIANCE_CACHE
-//     FORMAT=brume_irradiance_cache 3
+//     FORMAT=brume_irradiance_cache 4
 //     SCENE=<sceneContentHash>
 //     OPTIONS=<every option that changes cached values>
 //     CHANNELS=<spectrum channels per value>
 // then blocks, each appended whole by one writer: a 16-byte head (a tag naming the kind of its records, the
 // record count, the CRC-32 of the records, the CRC-32 of the head's first 12 bytes) and the records. Surface
-// records ("SURF"): point, normal, axis as 3 doubles each (positions round-trip exactly), the instant as a
-// double, the two radii as floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
+// records ("SURF"): point, normal, axis as 3 doubles each (positions round-trip exactly), the time as 4
+// doubles (RecordTime: the instant, the window's start and end, the spacing of its records), the two radii as floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
 // numbers are little-endian IEEE 754, as in memory on x86 and ARM. Volume records ("VOLU", whose head
-// holds the records' size in bytes where a surface block's holds their count): point and instant as 4
+// holds the records' size in bytes where a surface block's holds their count): point and time as 7
 // doubles, the radius as a float, the level, the number of peaks P and how many of the last are the sources'
 // as 32-bit integers, CHANNELS × 36 floats of coefficients and gradients, then per peak 4 floats (direction,
-// inverse distance), then P × CHANNELS floats of the peaks' light. Formats 1 (records without an instant) and
-// 2 (volume records without the sources' light) are refused.
+// inverse distance), then P × CHANNELS floats of the peaks' light. Formats 1 (records without an instant), 2
+// (volume records without the sources' light) and 3 (records of one instant, without a window) are refused.
 #pragma once
 #include <cstdint>
 #include <mutex>

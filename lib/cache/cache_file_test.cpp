@@ -25,7 +25,7 @@ using test::errorOf;
 
 const CacheIdentity kIdentity{"0123456789abcdef0123456789abcdef", "-ab 2 -aa 0.1 -ad 512", 3};
 constexpr size_t kHeadSize = 16;
-constexpr size_t kRecordSize = 10 * 8 + 2 * 4 + 4 + 5 * 3 * 4;
+constexpr size_t kRecordSize = 13 * 8 + 2 * 4 + 4 + 5 * 3 * 4;
 
 // Record `id` (a distinct point per id), with numbers that survive only an exact round trip.
 SurfaceRecord record(double id, int channels = 3) {
@@ -35,7 +35,8 @@ SurfaceRecord record(double id, int channels = 3) {
     r.axis = glm::normalize(glm::cross(r.normal, dvec3(0.3, -0.2, 0.9)));
     r.radius[0] = float(0.1 + id * 1e-3), r.radius[1] = 0.05f;
     r.level = int(id) % 3;
-    r.time = std::nextafter(60 + id, 0.0);
+    double from = std::nextafter(60 + id, 0.0);
+    r.when = RecordTime{from + 0.125, from, from + 0.25, 0.125};
     for (int i = 0; i < SurfaceRecord::kFields * channels; ++i) r.values.push_back(float(id) * 0.37f - float(i));
     return r;
 }
@@ -55,7 +56,7 @@ void expectSame(const std::vector<SurfaceRecord>& got, const std::vector<Surface
         EXPECT_TRUE(sameBits(a.point, b.point) && sameBits(a.normal, b.normal) && sameBits(a.axis, b.axis)) << i;
         EXPECT_EQ(std::memcmp(a.radius, b.radius, sizeof a.radius), 0) << i;
         EXPECT_EQ(a.level, b.level) << i;
-        EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof a.time), 0) << i;
+        EXPECT_EQ(std::memcmp(&a.when, &b.when, sizeof a.when), 0) << i;
         ASSERT_EQ(a.values.size(), b.values.size()) << i;
         EXPECT_EQ(std::memcmp(a.values.data(), b.values.data(), a.values.size() * sizeof(float)), 0) << i;
     }
@@ -65,7 +66,7 @@ void expectSame(const std::vector<SurfaceRecord>& got, const std::vector<Surface
 VolumeRecord volumeRecord(double id, int peaks, int channels = 3) {
     VolumeRecord r;
     r.point = {id, 1.0 / 3 + id, std::nextafter(id, -1e300)};
-    r.time = std::nextafter(120 + id, 0.0);
+    r.when = RecordTime::instant(std::nextafter(120 + id, 0.0));
     r.radius = float(0.2 + id * 1e-3);
     r.level = int(id) % 4;
     for (int i = 0; i < VolumeRecord::kFields * kShCount * channels; ++i) r.values.push_back(float(id) * 0.29f - float(i));
@@ -83,7 +84,7 @@ void expectSame(const std::vector<VolumeRecord>& got, const std::vector<VolumeRe
     for (size_t i = 0; i < got.size(); ++i) {
         const VolumeRecord &a = got[i], &b = expected[i];
         EXPECT_TRUE(sameBits(a.point, b.point)) << i;
-        EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof a.time), 0) << i;
+        EXPECT_EQ(std::memcmp(&a.when, &b.when, sizeof a.when), 0) << i;
         EXPECT_EQ(std::memcmp(&a.radius, &b.radius, sizeof a.radius), 0) << i;
         EXPECT_EQ(a.level, b.level) << i;
         EXPECT_EQ(a.sourcePeaks, b.sourcePeaks) << i;
@@ -173,7 +174,7 @@ TEST_F(CacheFileTest, AVolumeRecordThatDoesNotFitOrIsInvalidIsCorruption) {
         overwrite(path_, bytes);
         return errorOf([&] { CacheFile(path_, kIdentity).readNewVolumes(); });
     };
-    const size_t record = volumes + kHeadSize, peaksAt = record + 4 * 8 + 4 + 4;
+    const size_t record = volumes + kHeadSize, peaksAt = record + 7 * 8 + 4 + 4;
     int32_t tooMany = 3;
     std::string e = plant(peaksAt, &tooMany, 4);
     EXPECT_EQ(e.find(path_ + ": byte " + std::to_string(record) + ": damaged cache block (a volume record does not fit"), 0u)
@@ -196,7 +197,7 @@ TEST_F(CacheFileTest, AVolumeRecordThatDoesNotFitOrIsInvalidIsCorruption) {
 TEST_F(CacheFileTest, NewFileStartsWithItsHeader) {
     overwrite(path_, "");  // an empty file is taken as a new one
     CacheFile file(path_, kIdentity);
-    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 3\n"
+    EXPECT_EQ(contents(path_), "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache 4\n"
                                "SCENE=0123456789abcdef0123456789abcdef\nOPTIONS=-ab 2 -aa 0.1 -ad 512\nCHANNELS=3\n\n");
     EXPECT_TRUE(file.readNew().empty());
     EXPECT_EQ(file.path(), path_);
@@ -235,11 +236,13 @@ TEST_F(CacheFileTest, RefusesAFileMadeForAnotherSceneOptionsOrChannels) {
     expectSame(CacheFile(path_, kIdentity).readNew(), records(0, 1));
 }
 
-// Files of formats 1 (Brume before records kept their instant) and 2 (before volume records held the sources'
-// light) are refused, and left as they were.
+// Files of formats 1 (Brume before records kept their instant), 2 (before volume records held the sources'
+// light) and 3 (before records served windows of time) are refused, and left as they were.
 TEST_F(CacheFileTest, RefusesFilesOfEarlierFormats) {
     const std::pair<int, std::string> formats[] = {
-        {1, "whose records have no instant"}, {2, "whose volume records hold no light straight from the sources"}};
+        {1, "whose records have no instant"},
+        {2, "whose volume records hold no light straight from the sources"},
+        {3, "whose records hold one instant, not a window of them"}};
     for (const auto& [format, why] : formats) {
         std::string old = "#?BRUME_IRRADIANCE_CACHE\nFORMAT=brume_irradiance_cache " + std::to_string(format) +
                           "\nSCENE=" + kIdentity.scene + "\nOPTIONS=" + kIdentity.options + "\nCHANNELS=3\n\n";
@@ -306,8 +309,11 @@ void plantRecord(const std::string& path, size_t blockStart, const SurfaceRecord
     std::memcpy(p, &r.point, 24);
     std::memcpy(p + 24, &r.normal, 24);
     std::memcpy(p + 48, &r.axis, 24);
-    std::memcpy(p + 72, &r.time, 8);
-    std::memcpy(p + 80, r.radius, 8);
+    std::memcpy(p + 72, &r.when.at, 8);
+    std::memcpy(p + 80, &r.when.from, 8);
+    std::memcpy(p + 88, &r.when.to, 8);
+    std::memcpy(p + 96, &r.when.spacing, 8);
+    std::memcpy(p + 104, r.radius, 8);
     uint32_t count;
     std::memcpy(&count, bytes.data() + blockStart + 4, 4);
     auto crc = [](const char* data, size_t size) { return uint32_t(crc32(0, (const Bytef*)data, uInt(size))); };
@@ -332,6 +338,16 @@ TEST_F(CacheFileTest, AnInvalidRecordInTheFileIsCorruptionNotAValue) {
     plantRecord(path_, start, bad);
     e = errorOf([&] { CacheFile(path_, kIdentity).readNew(); });
     EXPECT_NE(e.find("invalid record: a radius is not positive"), std::string::npos) << e;
+
+    // A window that does not hold the record's instant, or whose records are not spaced within it.
+    for (RecordTime when : {RecordTime{5, 6, 8, 1}, RecordTime{7, 6, 8, 0}, RecordTime{6, 6, 6, 1},
+                            RecordTime{0, -INFINITY, INFINITY, 2}}) {
+        bad = record(0);
+        bad.when = when;
+        plantRecord(path_, start, bad);
+        e = errorOf([&] { CacheFile(path_, kIdentity).readNew(); });
+        EXPECT_NE(e.find("invalid record: its window of time is invalid"), std::string::npos) << e;
+    }
 }
 
 TEST_F(CacheFileTest, InvalidRecordsAreNeverWritten) {

@@ -1,13 +1,15 @@
-// The records of one kind at one instant: found by the zones that hold a receiver (an index of their boxes,
-// and the records added since it was built one by one), interpolated by their weights; the misses of
-// lookups counted in regions until they pay for a record; new records reconciled with the older ones.
+// The records of one kind: found by the zones that hold a receiver (an index of their boxes, and the records
+// added since it was built one by one) at the receiver's instant (RecordTime), interpolated by their weights
+// in space and time; the misses of lookups counted in regions until they pay for a record; new records
+// reconciled with the older ones of their instant.
 //
 // `Kind` (SurfaceZones, VolumeZones) says how a record speaks for its neighbours: weigh(record, receiver, value*),
 // box(record, origin), reach(record), facing(receiver), size(record), sizeBeforeRecords(), reconcile(fresh,
-// older); and its Record type, with `point`, `level` and `values`.
+// older); and its Record type, with `point`, `level`, `when` and `values`.
 #pragma once
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <optional>
 #include <unordered_map>
@@ -27,8 +29,8 @@ template <class Kind>
 class RecordLayer {
 public:
     using Record = typename Kind::Record;
-    // Level, facing, log2 of the size, and the region's coordinates.
-    using RegionKey = std::array<long long, 6>;
+    // Level, facing, log2 of the size, the region's coordinates, and the instant's bits.
+    using RegionKey = std::array<long long, 7>;
 
     // Regions and the index are measured from `origin` (the scene's): the same records wherever the model
     // stands. `kind` outlives the layer.
@@ -50,15 +52,18 @@ public:
     bool holds(const Receiver& at) const {
         return gather(at, [](const Record&, double) {}) > 0;
     }
-    // Calls f(record, weight) for each record of the receiver's bounce or shallower whose zone holds it (weight
-    // > 0), its value at the receiver (Kind::weigh's) in `value` first if given; returns the weights' sum.
+    // Calls f(record, weight) for each record of the receiver's bounce or shallower whose zone holds it at its
+    // instant (weight > 0: in space Kind::weigh's, times RecordTime's), its value at the receiver (Kind::weigh's)
+    // in `value` first if given; returns the weights' sum.
     template <class F>
     double gather(const Receiver& at, F&& f, Spectrum* value = nullptr) const {
         double total = 0;
         forEachHolding(at.point, [&](size_t i) {
             const Record& r = records_[i];
             if (r.level > at.level) return;
-            double w = kind_.weigh(r, at, value);
+            double inTime = r.when.weightAt(at.time);
+            if (!(inTime > 0)) return;
+            double w = kind_.weigh(r, at, value) * inTime;
             if (!(w > 0)) return;
             f(r, w);
             total += w;
@@ -66,15 +71,16 @@ public:
         return total;
     }
 
-    // Counts a miss of request q in its region: the region's key once as many misses as its first request
-    // is worth (`missesToPay` of it) have come.
+    // Counts a miss of request q in its region (misses at different instants are counted apart): the region's
+    // key once as many misses as its first request is worth (`missesToPay` of it) have come.
     template <class Worth>
     std::optional<RegionKey> countMiss(const RecordRequest& q, const Worth& missesToPay) {
         const RegionSize& region = regionSize(q.at.level);
         double size = region.size;
         dvec3 p = q.at.point - origin_;
-        RegionKey key{q.at.level, kind_.facing(q.at), region.log2, regionIndex(p.x, size), regionIndex(p.y, size),
-                      regionIndex(p.z, size)};
+        RegionKey key{q.at.level,           kind_.facing(q.at),     region.log2,
+                      regionIndex(p.x, size), regionIndex(p.y, size), regionIndex(p.z, size),
+                      std::bit_cast<long long>(q.at.time)};
         Region& counted = regions_[key];
         if (counted.misses++ == 0) counted.first = q, counted.order = requestsSeen_;
         ++requestsSeen_;
@@ -96,21 +102,37 @@ public:
     void add(std::vector<Record> records, bool unsaved) {
         size_t before = records_.size();
         for (Record& r : records) {
-            if (sizes_.size() <= size_t(r.level)) sizes_.resize(r.level + 1);
-            LevelSizes& level = sizes_[r.level];
-            level.logSum += std::log(kind_.size(r));
-            ++level.count;
-            level.region = regionOf(std::exp(level.logSum / level.count));
+            countSize(r);
             if (unsaved) unsaved_.push_back(records_.size());
             records_.push_back(std::move(r));
             reconcile(records_.size() - 1);
         }
         size_t indexed = index_.size();
         if (records_.size() - indexed <= std::max(kUnindexedLimit, indexed / 8) && before > 0) return;
-        std::vector<ZoneBox> boxes;
-        boxes.reserve(records_.size());
-        for (const Record& r : records_) boxes.push_back(kind_.box(r, origin_));
-        index_.build(boxes);
+        buildIndex();
+    }
+    // Forgets the records whose window is over at instant t and that were saved (or not made here), and the
+    // misses counted before t: a run that has moved on to t. The regions are sized by the records kept.
+    void forgetBefore(double t) {
+        std::erase_if(regions_, [t](const auto& entry) { return entry.second.first.at.time < t; });
+        std::vector<bool> unsaved(records_.size());
+        for (size_t i : unsaved_) unsaved[i] = true;
+        auto forgotten = [&](size_t i) { return records_[i].when.overAt(t) && !unsaved[i]; };
+        size_t i = 0;
+        while (i < records_.size() && !forgotten(i)) ++i;
+        if (i == records_.size()) return;
+        std::vector<Record> kept;
+        std::vector<size_t> keptUnsaved;
+        for (i = 0; i < records_.size(); ++i) {
+            if (forgotten(i)) continue;
+            if (unsaved[i]) keptUnsaved.push_back(kept.size());
+            kept.push_back(std::move(records_[i]));
+        }
+        records_ = std::move(kept);
+        unsaved_ = std::move(keptUnsaved);
+        sizes_.clear();
+        for (const Record& r : records_) countSize(r);
+        buildIndex();
     }
     // Appends the records added as unsaved since the last call to `out`, in their order.
     void takeUnsaved(std::vector<Record>& out) {
@@ -146,10 +168,26 @@ private:
         }
     }
 
+    // Counts the record's size in its bounce's typical size (the regions misses are counted in).
+    void countSize(const Record& r) {
+        if (sizes_.size() <= size_t(r.level)) sizes_.resize(r.level + 1);
+        LevelSizes& level = sizes_[r.level];
+        level.logSum += std::log(kind_.size(r));
+        ++level.count;
+        level.region = regionOf(std::exp(level.logSum / level.count));
+    }
+    void buildIndex() {
+        std::vector<ZoneBox> boxes;
+        boxes.reserve(records_.size());
+        for (const Record& r : records_) boxes.push_back(kind_.box(r, origin_));
+        index_.build(boxes);
+    }
+
+    // Records of one bounce and one instant check each other's light; those of other instants hold other light.
     void reconcile(size_t added) {
         Record& fresh = records_[added];
         forEachHolding(fresh.point, [&](size_t i) {
-            if (i == added || records_[i].level != fresh.level) return;
+            if (i == added || records_[i].level != fresh.level || records_[i].when.at != fresh.when.at) return;
             kind_.reconcile(fresh, records_[i]);
         });
     }

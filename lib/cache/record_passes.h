@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -33,9 +34,10 @@ struct CacheVisit {
 };
 
 // Makes the records `store` accepts of these requests (see RecordStore::accept; `missesToPay` tells what a
-// record is worth), kRecordsPerRound at a time on all threads: make(request, visit) computes one, noting in
-// `visit` (seeded by the request) what its own rays missed; those requests, of deeper bounces and of either
-// kind of record, go to serveDeeper before the next round, so that later records use the records they bring.
+// record is worth), kRecordsPerRound at a time on all threads: make(request, visit) computes those of one
+// request (a window's, RecordWindows), noting in `visit` (seeded by the request) what their own rays missed;
+// those requests, of deeper bounces and of either kind of record, go to serveDeeper before the next round, so
+// that later records use the records they bring.
 // A round leaves out the requests whose points the records of the rounds before it hold: accept() takes one
 // request per region, and where the zones made are far larger than the regions (in open smoke, zones of
 // 0.3 m beside regions sized by the centimetre zones near walls), a pass whose lookups missed everywhere in
@@ -52,12 +54,14 @@ void makeRecords(Store& store, const std::vector<RecordRequest>& requests,
         for (; next < accepted.size() && round.size() < kRecordsPerRound; ++next)
             if (!store.holds(accepted[next].at)) round.push_back(accepted[next]);
         const size_t n = round.size();
-        std::vector<typename Store::Record> records(n);
+        std::vector<std::vector<typename Store::Record>> made(n);
         std::vector<CacheVisit> visits(n);
         tbb::parallel_for(size_t(0), n, [&](size_t i) {
             visits[i].key = round[i].key;
-            records[i] = make(round[i], visits[i]);
+            made[i] = make(round[i], visits[i]);
         });
+        std::vector<typename Store::Record> records;
+        for (auto& some : made) std::move(some.begin(), some.end(), std::back_inserter(records));
         store.insert(std::move(records));
         std::vector<RecordRequest> deeper;
         for (const CacheVisit& v : visits) deeper.insert(deeper.end(), v.requests.begin(), v.requests.end());

@@ -15,7 +15,7 @@ namespace {
 // Requests on a floor 0.6 m apart (each in a region of its own: accept() takes them all), and records made
 // there of zones `radius` wide; how many records were made.
 size_t recordsMade(float radius) {
-    SurfaceCache cache(SurfaceZones(RecordShape{}), dvec3(0), InstantKeys(false));
+    SurfaceCache cache(SurfaceZones(RecordShape{}), dvec3(0));
     std::vector<RecordRequest> requests;
     for (int i = 0; i < 200; ++i)
         requests.push_back({Receiver{dvec3(0.6 * i, 0, 0), dvec3(0, 0, 1), 0, 0}, {}, 1, uint64_t(i)});
@@ -28,7 +28,7 @@ size_t recordsMade(float radius) {
                        SurfaceRecord::kTiltK1, SurfaceRecord::kTiltK2})
             r.setField(f, Spectrum(f == SurfaceRecord::kIrradiance ? 1.f : 0.f));
         ++made;
-        return r;
+        return std::vector<SurfaceRecord>{r};
     };
     makeRecords(cache, requests, [](const RecordRequest&) { return 1; }, make, [](const std::vector<RecordRequest>&) {});
     EXPECT_EQ(cache.size(), made.load());

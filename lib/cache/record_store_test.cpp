@@ -1,5 +1,5 @@
-// Lookups, acceptance of requests and the splotch control of the surface irradiance cache, and its instants,
-// on hand-made records.
+// Lookups, acceptance of requests and the splotch control of the surface irradiance cache, and its windows
+// of time, on hand-made records.
 #include "cache/surface_cache.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@ RecordShape shape() {
     return s;
 }
 
-SurfaceCache cacheOf(bool timed = false) { return SurfaceCache(SurfaceZones(shape()), dvec3(0), InstantKeys(timed)); }
+SurfaceCache cacheOf() { return SurfaceCache(SurfaceZones(shape()), dvec3(0)); }
 
 Receiver at(const dvec3& p, const dvec3& n = dvec3(0, 0, 1), int level = 0, double time = 0) { return {p, n, level, time}; }
 
@@ -110,14 +110,14 @@ TEST(SurfaceCache, DisagreeingRecordsShrinkSoNeitherSpeaksForTheOther) {
     SurfaceCache cache = cacheOf();
     cache.insert({record(dvec3(0), 1, 0.5f, 0.5f)});
     cache.insert({record(dvec3(0.3, 0, 0), 2, 0.5f, 0.5f)});
-    EXPECT_LT(cache.records(0)[0].radius[0], 0.31f);
-    EXPECT_LT(cache.records(0)[1].radius[0], 0.31f);
+    EXPECT_LT(cache.records()[0].radius[0], 0.31f);
+    EXPECT_LT(cache.records()[1].radius[0], 0.31f);
     // Agreeing ones keep their zones.
     SurfaceCache calm = cacheOf();
     calm.insert({record(dvec3(0), 1, 0.5f, 0.5f)});
     calm.insert({record(dvec3(0.3, 0, 0), 1.05f, 0.5f, 0.5f)});
-    EXPECT_EQ(calm.records(0)[0].radius[0], 0.5f);
-    EXPECT_EQ(calm.records(0)[1].radius[0], 0.5f);
+    EXPECT_EQ(calm.records()[0].radius[0], 0.5f);
+    EXPECT_EQ(calm.records()[1].radius[0], 0.5f);
 }
 
 // Many records through the BVH: a lookup finds exactly the records whose zones hold the point.
@@ -135,39 +135,81 @@ TEST(SurfaceCache, IndexFindsTheSameRecordsAsAScan) {
     EXPECT_FALSE(cache.lookup(at(dvec3(-0.5, 0, 0), dvec3(0, 0, 1), 0), e));
 }
 
-// Where the scene changes in time, a record holds the light of its own instant: lookups at another instant
-// find nothing, misses are counted per instant, and a sequence that moves on forgets the instants behind it.
-TEST(SurfaceCache, RecordsServeOnlyTheirOwnInstantWhenTheSceneChangesInTime) {
-    SurfaceCache cache = cacheOf(true);
+// Records of one instant serve that instant alone: lookups at another find nothing, records of other
+// instants neither blend with them nor shrink them, misses are counted per instant, and a run that moves on
+// forgets the records whose instants are behind it.
+TEST(SurfaceCache, RecordsOfOneInstantServeItAlone) {
+    SurfaceCache cache = cacheOf();
     SurfaceRecord early = record(dvec3(0), 1, 0.5f, 0.5f), late = record(dvec3(0), 3, 0.5f, 0.5f);
-    early.time = 60, late.time = 120;
+    early.when = RecordTime::instant(60), late.when = RecordTime::instant(120);
     cache.insert({early, late});
     Spectrum e;
     ASSERT_TRUE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 60), e));
-    EXPECT_FLOAT_EQ(e[0], 1);  // not blended with the later record, nor shrunk by it
+    EXPECT_FLOAT_EQ(e[0], 1);
     ASSERT_TRUE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 120), e));
     EXPECT_FLOAT_EQ(e[0], 3);
     EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 90), e));
-    EXPECT_EQ(cache.records(60)[0].radius[0], 0.5f);
+    EXPECT_EQ(cache.records()[0].radius[0], 0.5f);
     RecordRequest a{at(dvec3(2, 0, 0), dvec3(0, 0, 1), 0, 60), {}, 1, 1}, b{at(dvec3(2, 0, 0), dvec3(0, 0, 1), 0, 90), {}, 1, 2};
     EXPECT_TRUE(cache.accept({a, b}, [](const RecordRequest&) { return 2; }).empty());
-    cache.keepOnly(120);
+    cache.takeUnsaved();
+    cache.forgetBefore(120);
     EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 60), e));
     EXPECT_TRUE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 120), e));
     EXPECT_EQ(cache.size(), 1u);
-    // A scene that does not change: one set of records for every instant.
-    SurfaceCache still = cacheOf(false);
-    still.insert({early});
-    EXPECT_TRUE(still.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 90), e));
-    still.keepOnly(120);
-    EXPECT_EQ(still.size(), 1u);
+    // The misses counted at 60 and 90 were forgotten with them: one more at 60 pays for nothing.
+    EXPECT_TRUE(cache.accept({a}, [](const RecordRequest&) { return 2; }).empty());
+}
+
+// A window's three records (instants 0, 2, 4 of [0, 4)) interpolate linearly in time between the two nearest
+// (exact, to float rounding); the window's end belongs to the next one. Records of every instant serve every
+// instant and are never forgotten.
+TEST(SurfaceCache, AWindowsRecordsInterpolateInTime) {
+    SurfaceCache cache = cacheOf();
+    std::vector<SurfaceRecord> three;
+    for (auto [t, e] : {std::pair{0.0, 1.f}, {2.0, 2.f}, {4.0, 5.f}}) {
+        three.push_back(record(dvec3(0), e, 0.5f, 0.5f));
+        three.back().when = RecordTime{t, 0, 4, 2};
+    }
+    cache.insert(three);
+    Spectrum e;
+    for (auto [t, expected] : {std::pair{0.0, 1.f}, {1.0, 1.5f}, {2.0, 2.f}, {3.0, 3.5f}, {3.75, 4.625f}}) {
+        ASSERT_TRUE(cache.lookup(at(dvec3(0.1, 0, 0), dvec3(0, 0, 1), 0, t), e)) << t;
+        EXPECT_NEAR(e[0], expected, 1e-6) << t;
+    }
+    EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 4), e));
+    EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, -0.5), e));
+    cache.takeUnsaved();
+    cache.forgetBefore(3);
+    EXPECT_EQ(cache.size(), 3u);
+    cache.forgetBefore(4);
+    EXPECT_EQ(cache.size(), 0u);
+
+    SurfaceCache still = cacheOf();
+    still.insert({record(dvec3(0), 1, 0.5f, 0.5f)});
+    EXPECT_TRUE(still.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, -1e9), e));
+    still.takeUnsaved();
+    still.forgetBefore(1e9);
+    EXPECT_TRUE(still.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 1e9), e));
+}
+
+// A run that moves on keeps the records it has not handed out to be saved.
+TEST(SurfaceCache, MovingOnKeepsTheRecordsNotYetSaved) {
+    SurfaceCache cache = cacheOf();
+    SurfaceRecord r = record(dvec3(0), 1, 0.5f, 0.5f);
+    r.when = RecordTime::instant(5);
+    cache.insert({r});
+    cache.forgetBefore(10);
+    ASSERT_EQ(cache.takeUnsaved().size(), 1u);
+    cache.forgetBefore(10);
+    EXPECT_EQ(cache.size(), 0u);
 }
 
 // Records made here are handed out once to be saved, those loaded from a file never.
 TEST(SurfaceCache, HandsOutTheRecordsMadeSinceTheLastSave) {
-    SurfaceCache cache = cacheOf(true);
+    SurfaceCache cache = cacheOf();
     SurfaceRecord loaded = record(dvec3(0), 1, 0.5f, 0.5f), made = record(dvec3(3, 0, 0), 2, 0.5f, 0.5f);
-    made.time = 5;
+    made.when = RecordTime::instant(5);
     cache.insertSaved({loaded});
     cache.insert({made});
     std::vector<SurfaceRecord> unsaved = cache.takeUnsaved();

@@ -1,5 +1,5 @@
 // One record of the surface irradiance cache: the indirect irradiance measured at a point of a surface at
-// one instant, how it changes nearby (Ward & Heckbert 1992's gradients, second order in rotation), and the
+// one instant (serving a window of instants, RecordTime), how it changes nearby (Ward & Heckbert 1992's gradients, second order in rotation), and the
 // elliptic zone where it stands for its neighbours (Ribardière 2010's adaptive records: two tangent axes,
 // each with its own length).
 #pragma once
@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "cache/record_time.h"
 #include "spectrum/spectrum.h"
 
 namespace brume {
@@ -20,7 +21,7 @@ struct SurfaceRecord {
     dvec3 axis{1, 0, 0};        // k1, a unit tangent; k2 = normal × k1
     float radius[2] = {0, 0};   // the zone's semi-axes along k1 and k2
     int level = 0;              // the diffuse bounce it was computed for (0: seen from a primary ray)
-    double time = 0;            // the scene's instant it holds the light of (s); moot where nothing changes in time
+    RecordTime when;            // the instant it holds the light of, and the window it serves
     // Per channel, in this order: irradiance E; its translational gradients along k1, k2 (per metre); its
     // rotational gradients as the normal tilts toward k1, k2 (per radian).
     std::vector<float> values;

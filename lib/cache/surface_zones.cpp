@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
 
 namespace brume {
 
@@ -70,6 +72,48 @@ void SurfaceZones::shrinkToExclude(SurfaceRecord& holder, const SurfaceRecord& o
     double a, b;
     float factor = float(std::max(0.5, 0.999 * zoneDistance(holder, other.point, a, b)));
     holder.radius[0] *= factor, holder.radius[1] *= factor;
+}
+
+namespace {
+// The distance from the record's point to the edge of its ellipse in the tangent direction d.
+double edgeToward(const SurfaceRecord& r, const dvec3& d) {
+    double c = glm::dot(d, r.axis) / r.radius[0], s = glm::dot(d, r.axis2()) / r.radius[1];
+    return 1 / std::sqrt(c * c + s * s);
+}
+
+// The record's gradients along and about its axes turned to `axis` (a unit tangent of the same plane).
+void turnTo(SurfaceRecord& r, const dvec3& axis) {
+    const dvec3 axis2 = glm::cross(r.normal, axis);
+    const double c = glm::dot(r.axis, axis), s = glm::dot(r.axis2(), axis);  // k1' = c k1 + s k2
+    const double c2 = glm::dot(r.axis, axis2), s2 = glm::dot(r.axis2(), axis2);
+    for (auto [f1, f2] : {std::pair{SurfaceRecord::kAlongK1, SurfaceRecord::kAlongK2},
+                          std::pair{SurfaceRecord::kTiltK1, SurfaceRecord::kTiltK2}}) {
+        Spectrum g1 = r.field(f1), g2 = r.field(f2);
+        r.setField(f1, g1 * float(c) + g2 * float(s));
+        r.setField(f2, g1 * float(c2) + g2 * float(s2));
+    }
+    r.axis = axis;
+}
+}  // namespace
+
+void SurfaceZones::shareZone(std::vector<SurfaceRecord>& records) {
+    if (records.size() < 2) return;
+    const SurfaceRecord& first = records.front();
+    // The ellipse is checked along 64 tangent directions: between them it bulges past a neighbour's edge by
+    // at most 1 - cos(π/64), 0.1 %.
+    constexpr int kDirections = 64;
+    double scale = 1;
+    for (int i = 0; i < kDirections; ++i) {
+        double phi = std::numbers::pi * i / kDirections;
+        dvec3 d = first.axis * std::cos(phi) + first.axis2() * std::sin(phi);
+        for (size_t k = 1; k < records.size(); ++k) scale = std::min(scale, edgeToward(records[k], d) / edgeToward(first, d));
+    }
+    const float radius[2] = {float(first.radius[0] * scale), float(first.radius[1] * scale)};
+    const dvec3 axis = first.axis;
+    for (SurfaceRecord& r : records) {
+        turnTo(r, axis);
+        r.radius[0] = radius[0], r.radius[1] = radius[1];
+    }
 }
 
 void SurfaceZones::reconcile(SurfaceRecord& fresh, SurfaceRecord& older) const {

@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "cache/record_shape.h"
 #include "cache/surface_record.h"
@@ -42,6 +43,12 @@ public:
     // other's value, within twice the accuracy, where its zone holds the other; else that zone shrinks to
     // leave the other out (by at most half at a time: either may be the noisy one).
     void reconcile(SurfaceRecord& fresh, SurfaceRecord& older) const;
+
+    // How bright the record's irradiance is (RecordWindows weighs how its light changes in time by it).
+    static double brightnessOf(const SurfaceRecord& r) { return brume::brightness(r.field(SurfaceRecord::kIrradiance)); }
+    // Records of one point at the instants of a window, made to share the first's zone: its axes (the others'
+    // gradients turned to them) and the largest ellipse about them inside every record's zone.
+    static void shareZone(std::vector<SurfaceRecord>& records);
 
 private:
     void shrinkToExclude(SurfaceRecord& holder, const SurfaceRecord& other) const;

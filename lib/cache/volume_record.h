@@ -1,7 +1,7 @@
-// One record of the volume irradiance cache: the light arriving from every direction at a point in
-// a medium at one instant, as the coefficients of real spherical harmonics up to order 2 per channel (enough
-// for the shape a Henyey–Greenstein phase function sees of smooth light: the lobe keeps g^l of order l), how
-// they change as the point moves (per metre along x, y and z), and the sphere about the point where it stands
+// One record of the volume irradiance cache: the light arriving from every direction at a point in a medium
+// at one instant (serving a window of instants, RecordTime), as the coefficients of real spherical harmonics
+// up to order 2 per channel (enough for the shape a Henyey–Greenstein phase function sees of smooth light:
+// the lobe keeps g^l of order l), how they change as the point moves (per metre along x, y and z), and the sphere about the point where it stands
 // for its neighbours. Light far brighter than the rest from a few directions (the glow a lamp makes in the
 // medium around it) is kept apart as peaks, single samples the phase function weighs exactly: order 2 cannot
 // hold a narrow peak (under HG .6 it would scatter 0.37 in place of 0.80 sr⁻¹ of it forward, 0.08 in place of
@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include "cache/record_time.h"
 #include "sampling/spherical_harmonics.h"
 #include "spectrum/spectrum.h"
 
@@ -24,7 +25,7 @@ struct VolumeRecord {
     glm::dvec3 point{0};
     float radius = 0;  // the zone's
     int level = 0;     // the bounce it was computed for (0: seen from a primary ray)
-    double time = 0;   // the scene's instant (s)
+    RecordTime when;   // the instant it holds the light of, and the window it serves
     // values[((field × 9) + k) × channels + c]: field 0 the coefficient of Y_k in channel c, fields 1–3 its
     // gradient along x, y, z.
     std::vector<float> values;

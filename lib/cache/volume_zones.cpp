@@ -112,6 +112,12 @@ void VolumeZones::shrinkToExclude(VolumeRecord& holder, const VolumeRecord& othe
     holder.radius *= float(std::max(0.5, 0.999 * q));
 }
 
+void VolumeZones::shareZone(std::vector<VolumeRecord>& records) {
+    float radius = records.front().radius;
+    for (const VolumeRecord& r : records) radius = std::min(radius, r.radius);
+    for (VolumeRecord& r : records) r.radius = radius;
+}
+
 void VolumeZones::reconcile(VolumeRecord& fresh, VolumeRecord& older) const {
     shrinkToExclude(older, fresh);
     shrinkToExclude(fresh, older);

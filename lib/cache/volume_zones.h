@@ -3,6 +3,7 @@
 // its zone is boxed for the index; and how two records that disagree shrink their zones.
 #pragma once
 #include <array>
+#include <vector>
 
 #include "cache/record_shape.h"
 #include "cache/volume_record.h"
@@ -39,6 +40,11 @@ public:
     // Splotch control, as surface records': each must agree with the other's mean radiance within twice the
     // accuracy where its zone holds the other, else that zone shrinks to leave it out (by at most half).
     void reconcile(VolumeRecord& fresh, VolumeRecord& older) const;
+
+    // How bright the light arriving at the record's point is (RecordWindows weighs how it changes in time by it).
+    static double brightnessOf(const VolumeRecord& r) { return brume::brightness(r.meanRadiance()); }
+    // Records of one point at the instants of a window, made to share one zone: the smallest of theirs.
+    static void shareZone(std::vector<VolumeRecord>& records);
 
 private:
     void shrinkToExclude(VolumeRecord& holder, const VolumeRecord& other) const;

@@ -99,7 +99,26 @@ void CacheClient::tracePass(Samples& samples, int pass, const SurfaceId& leaving
     }
 }
 
-SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+namespace {
+// The request at another instant.
+RecordRequest at(RecordRequest q, double time) {
+    q.at.time = time;
+    return q;
+}
+}  // namespace
+
+std::vector<SurfaceRecord> CacheClient::makeRecords(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+    return windows_.recordsAt(q.at.time, cache_->kind(), settings_.ambientAccuracy,
+                              [&](double time) { return recordAt(at(q, time), scratch, visit); });
+}
+
+std::vector<VolumeRecord> CacheClient::makeVolumeRecords(const RecordRequest& q, Scratch& scratch,
+                                                         CacheVisit& visit) const {
+    return windows_.recordsAt(q.at.time, volumes_->kind(), settings_.ambientAccuracy,
+                              [&](double time) { return volumeRecordAt(at(q, time), scratch, visit); });
+}
+
+SurfaceRecord CacheClient::recordAt(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
     const dvec3& point = q.at.point;
@@ -123,12 +142,10 @@ SurfaceRecord CacheClient::makeRecord(const RecordRequest& q, Scratch& scratch, 
     for (int p = 1; p < passes; ++p) pass(samples.addPass());
     for (AimedSample& a : aimed) a.irradiance *= float(1.0 / passes);
     samples.aimed() = std::move(aimed);
-    SurfaceRecord record = buildRecord(samples, cache_->kind().shape(), q.at.level);
-    record.time = q.at.time;
-    return record;
+    return buildRecord(samples, cache_->kind().shape(), q.at.level);
 }
 
-VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+VolumeRecord CacheClient::volumeRecordAt(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
     std::vector<SourceSamples> sources(scene_.lights().size());
@@ -146,7 +163,6 @@ VolumeRecord CacheClient::makeVolumeRecord(const RecordRequest& q, Scratch& scra
     const double extinction = extinctionAt(q.at.point, child, ctx);
     VolumeRecord record = buildVolumeRecord(samples, sources, volumes_->kind().shape(), q.at.level,
                                             nearestSource(q.at.point), extinction);
-    record.time = q.at.time;
     record.radius = float(heldRadius(record, extinction, child, ctx));
     return record;
 }

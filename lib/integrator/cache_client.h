@@ -2,6 +2,7 @@
 // points in media (noting the records they miss), and the rays a record is made of (a hemisphere's, a
 // sphere's).
 #pragma once
+#include "cache/record_windows.h"
 #include "cache/sphere_samples.h"
 #include "cache/surface_cache.h"
 #include "cache/volume_cache.h"
@@ -18,12 +19,16 @@ namespace brume {
 class CacheClient {
 public:
     // `cache` and `volumes` may be null (no cache: -ab or -aa 0); `seeds` seed the records' rays by their
-    // requests' keys.
+    // requests' keys; `windows`: the windows of time records serve.
     CacheClient(const SurfaceCache* cache, const VolumeCache* volumes, const RenderScene& scene,
                 const RenderSettings& settings, const Tracer& tracer, const HitShading& shading, const Media& media,
-                const LightSampler& lights, const SkyPortals& portals, const SunPatches& patches, Seeds seeds)
+                const LightSampler& lights, const SkyPortals& portals, const SunPatches& patches, Seeds seeds,
+                RecordWindows windows)
         : cache_(cache), volumes_(volumes), scene_(scene), settings_(settings), tracer_(tracer), shading_(shading),
-          media_(media), lights_(lights), portals_(portals), patches_(patches), seeds_(seeds) {}
+          media_(media), lights_(lights), portals_(portals), patches_(patches), seeds_(seeds), windows_(windows) {}
+
+    // The windows of time the records made from now on serve. Not while records are made.
+    void useWindows(RecordWindows windows) { windows_ = windows; }
 
     const SurfaceCache* cache() const { return cache_; }
     const VolumeCache* volumes() const { return volumes_; }
@@ -54,20 +59,25 @@ public:
     int missesToPay(const RecordRequest& request) const {
         return request.at.level == 0 ? 1 : std::max(1, recordDivisions(request));
     }
+    // The records of the window of time holding the request's instant (RecordWindows: one, or three at its
+    // start, middle and end, each by recordAt with the same samples).
+    std::vector<SurfaceRecord> makeRecords(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
+    std::vector<VolumeRecord> makeVolumeRecords(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
+
+private:
     // A record: the radiance of stratified rays over the hemisphere (more passes of them where their standard
     // error asks, see passesFor), each continuing one bounce deeper (where
     // the cache, or paths, give the light of further bounces), and as many samples aimed at the sky through
     // the windows and at the sun's patches (SkyPortals, SunPatches), which count in the record's gradients
     // and zone as equivalent point sources. Sources these rays meet are left out: records hold indirect
-    // light, next-event estimation gives the direct. Their own misses go to `visit`.
-    SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
+    // light, next-event estimation gives the direct. Their own misses go to `visit`. At the request's instant.
+    SurfaceRecord recordAt(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
     // A volume record: the radiance of rays stratified over the sphere, each continuing one bounce deeper, the
     // sources they meet left out as a surface record's rays leave them, and each source's light by
     // sourceSamples of next-event estimation's shadow rays (LightSampler::arriving). The sphere's rays come in
     // passes of a quarter of -ad, as many as their standard error asks (volumePassesFor).
-    VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
+    VolumeRecord volumeRecordAt(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
 
-private:
     static constexpr int kMinDivisions = 16;
     // A volume record's shadow rays per source: an eighth of its sphere's rays, at least 8 (128 at -ad 1024,
     // where a view ray's in-scattering point takes one to four; a record's light is shared by the many
@@ -141,6 +151,7 @@ private:
     const SkyPortals& portals_;
     const SunPatches& patches_;
     Seeds seeds_;
+    RecordWindows windows_;
 };
 
 }  // namespace brume

@@ -30,7 +30,7 @@ RenderSettings cached(int ad = 64) {
 
 // A cache of the settings' accuracy (its other bounds matter little here).
 struct Cache {
-    SurfaceCache store{SurfaceZones(RecordShape{}), dvec3(0), InstantKeys(false)};
+    SurfaceCache store{SurfaceZones(RecordShape{}), dvec3(0)};
 };
 
 // A floor point, looked up by a path of weight .3 through a lobe of coefficient 1 at diffuse bounce 0, instant
@@ -63,7 +63,9 @@ CacheVisit waiting() {
 // A record made in a uniform surrounding of radiance L (the tracer's), at the lookup's point.
 SurfaceRecord uniformRecord(Parts& parts, const Lookup& lookup, CacheVisit& visit) {
     parts.tracer.value = Spectrum(kL);
-    return parts.cache.makeRecord(lookup.request(), parts.scratch, visit);
+    std::vector<SurfaceRecord> records = parts.cache.makeRecords(lookup.request(), parts.scratch, visit);
+    EXPECT_EQ(records.size(), 1u);  // the scene is static: one record serves every instant
+    return records.at(0);
 }
 
 }  // namespace
@@ -109,8 +111,8 @@ TEST(CacheClient, AMissNotesARequestAndAWaitingItemGetsZero) {
 
 // In a uniform surrounding of radiance L a record holds E = πL (its cosine-weighted strata sum it exactly:
 // 1e-5) and no translational gradient (neighbouring strata agree: 1e-5 E); it is of the request's bounce and
-// instant, made of about -ad rays (64 ± 8: whole rows and columns), each a sampled path one bounce deeper
-// leaving the floor upward. Inserted, it serves lookups there.
+// serves every instant (the scene is static), made of about -ad rays (64 ± 8: whole rows and columns), each a
+// sampled path one bounce deeper leaving the floor upward. Inserted, it serves lookups there.
 TEST(CacheClient, ARecordInAUniformSurroundingHoldsPiL) {
     Cache cache;
     Parts parts(kFloor, cached(64), &cache.store);
@@ -122,7 +124,8 @@ TEST(CacheClient, ARecordInAUniformSurroundingHoldsPiL) {
     for (auto gradient : {SurfaceRecord::kAlongK1, SurfaceRecord::kAlongK2})
         EXPECT_NEAR(record.field(gradient)[0], 0, 1e-5 * E) << gradient;
     EXPECT_EQ(record.level, 0);
-    EXPECT_EQ(record.time, 3.5);
+    EXPECT_EQ(record.when.weightAt(-1e9), 1.0);
+    EXPECT_EQ(record.when.weightAt(3.5), 1.0);
     EXPECT_EQ(record.point, lookup.at.point);
     EXPECT_NEAR(double(parts.tracer.rays.size()), 64, 8);
     for (const AskedRay& r : parts.tracer.rays) {
@@ -155,7 +158,7 @@ TEST(CacheClient, ASurfaceRecordsPassesFollowItsStandardErrorAgainstAllItsLight)
         };
         Lookup lookup{parts};
         CacheVisit visit;
-        parts.cache.makeRecord(lookup.request(), parts.scratch, visit);
+        parts.cache.makeRecords(lookup.request(), parts.scratch, visit);
         return double(parts.tracer.rays.size());
     };
     const std::string above = "bright polygon over 0 0 12  -.2 -.9 1  -.2 .1 1  .8 .1 1  .8 -.9 1\n";
@@ -171,14 +174,14 @@ TEST(CacheClient, ASurfaceRecordsPassesFollowItsStandardErrorAgainstAllItsLight)
 // 2L at random, the first pass's relative error is about 1/√64 = 12 %, four times and more the 3 % -aa .1
 // asks for: four passes in all, -ad rays. Deeper records make one pass of all their rays.
 TEST(CacheClient, AVolumeRecordsPassesFollowItsStandardError) {
-    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), InstantKeys(false)};
+    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0)};
     Parts parts(kFloor, cached(256), nullptr, &volumes);
     RecordRequest q{Receiver{dvec3(0, 0, 1), std::nullopt, 0, 0.0}, SurfaceId{}, 1, 9};
     auto rays = [&](int level) {
         parts.tracer.rays.clear();
         q.at.level = level;
         CacheVisit visit;
-        VolumeRecord record = parts.cache.makeVolumeRecord(q, parts.scratch, visit);
+        VolumeRecord record = parts.cache.makeVolumeRecords(q, parts.scratch, visit).at(0);
         return std::pair{double(parts.tracer.rays.size()), double(record.meanRadiance()[0])};
     };
     parts.tracer.value = Spectrum(kL);
@@ -215,13 +218,13 @@ TEST(CacheClient, AVolumeRecordsZoneStopsWhereItsEdgeNeedsIt) {
     auto grid = brume::medium::testing::boxGrid({0, 0, 0}, {99, 99, 99}, 1.0f, 0.1);
     grid->tree().fill(openvdb::CoordBBox(openvdb::Coord(50, 0, 0), openvdb::Coord(99, 99, 99)), 20.0f, true);
     brume::medium::testing::writeGrid(dir.path() / "step.vdb", grid);
-    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0), InstantKeys(false)};
+    VolumeCache volumes{VolumeZones(RecordShape{}), dvec3(0)};
     auto radius = [&](const std::string& scene, const dvec3& p) {
         Parts parts(scene + "void smoke s 1 step.vdb 0 3 1 1 1\n", cached(64), nullptr, &volumes);
         parts.tracer.value = Spectrum(kL);
         RecordRequest q{Receiver{p, std::nullopt, 1, 0.0}, SurfaceId{}, 1, 9};
         CacheVisit visit;
-        return double(parts.cache.makeVolumeRecord(q, parts.scratch, visit).radius);
+        return double(parts.cache.makeVolumeRecords(q, parts.scratch, visit).at(0).radius);
     };
     EXPECT_NEAR(radius("", dvec3(2, 5, 5)), 0.1, 1e-6);
     EXPECT_NEAR(radius("", dvec3(4.85, 5, 5)), 0.1 / 10.5, 1e-4);

@@ -49,12 +49,16 @@ struct WorkItem {
 class Integrator final : public Tracer {
 public:
     // `cache`, `volumes`: the irradiance caches to look records up in (null: none); they outlive the
-    // integrator. The settings' instant (-T, else 0) is prepared.
+    // integrator. Error where the settings' instant (-T) is outside the smoke's key frames.
     Integrator(const RenderScene& scene, const RenderSettings& settings, const SurfaceCache* cache = nullptr,
                const VolumeCache* volumes = nullptr);
 
-    // Makes rays at instant `time` possible (the smoke then); forgets the other instants. Not while rays are
-    // traced.
+    // The instants its rays are traced at (their smoke, the span with data).
+    const Instants& instants() const { return instants_; }
+    // Moves the run to instant `time`: records made from now on serve windows of time from it where the run
+    // has stepped forward by less than -at (a walk's frames); a run at one instant, or whose instants are
+    // further apart, makes records of one instant each (a window would serve one of its instants). Forgets the
+    // smoke of the instants before it. Not while rays are traced.
     void moveTo(double time);
 
     // Radiance arriving at q.org from direction q.dir (the ray's value), and rtrace's other outputs of the
@@ -80,13 +84,14 @@ public:
     // simulation's domain lacks data, DataCoverage), at `time`.
     double dataCoverageBetween(const dvec3& from, const dvec3& to, double time) const;
 
-    // The cache's side of the record passes: what a missed record is worth, and a record.
+    // The cache's side of the record passes: what a missed record is worth, and the records of a request.
     int missesToPay(const RecordRequest& request) const { return cache_.missesToPay(request); }
-    SurfaceRecord makeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
-        return cache_.makeRecord(request, scratch, visit);
+    std::vector<SurfaceRecord> makeRecords(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
+        return cache_.makeRecords(request, scratch, visit);
     }
-    VolumeRecord makeVolumeRecord(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
-        return cache_.makeVolumeRecord(request, scratch, visit);
+    std::vector<VolumeRecord> makeVolumeRecords(const RecordRequest& request, Scratch& scratch,
+                                                CacheVisit& visit) const {
+        return cache_.makeVolumeRecords(request, scratch, visit);
     }
 
     // The seed of the samples of work item `index` (fixed by -u-, else new each run); pictures seed their
@@ -132,6 +137,8 @@ private:
     Seeds seeds_;
     double epsilon_;  // offset for sensor points off their surface, relative to the scene size
     RussianRoulette roulette_;
+    Instants instants_;
+    std::optional<double> instant_, previousInstant_;  // the run's instant, and the one before (moveTo)
     Media media_;
     HitShading shading_;
     ShadowRays shadowRays_;

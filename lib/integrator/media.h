@@ -1,12 +1,8 @@
 // The media light crosses: Radiance's global medium (-me, -ma, -mg, in the sampling's bands), the mists a
-// path is inside, and the smoke at each instant in use. Smoke at an instant is built once (its majorant
-// grids bound the density then): a run prepares the instants it traces at before tracing there.
+// path is inside, and the smoke at each instant (the run's Instants build it).
 #pragma once
-#include <map>
-#include <optional>
-
+#include "integrator/instants.h"
 #include "integrator/path_state.h"
-#include "medium/instant_keys.h"
 #include "medium/participating_media.h"
 #include "world/render_scene.h"
 
@@ -16,16 +12,11 @@ struct RenderSettings;
 
 class Media {
 public:
-    // `settings` in the sampling's bands (inBands).
-    Media(const RenderScene& scene, const RenderSettings& settings);
+    // `settings` in the sampling's bands (inBands); `instants` outlives the media.
+    Media(const RenderScene& scene, const RenderSettings& settings, Instants& instants);
 
-    // Builds the smoke at instant `time` (once; where nothing changes in time, once for every instant).
-    // Not while rays are traced.
-    void prepare(double time);
-    // Forgets the smoke of every instant but `time`.
-    void keepOnly(double time);
-    // The smoke at a prepared instant (std::logic_error for another).
-    const ParticipatingMedia& smokeAt(double time) const;
+    // The smoke at instant `time` (Instants::smokeAt).
+    const ParticipatingMedia& smokeAt(double time) const { return instants_.smokeAt(time); }
 
     // Whether anything at all absorbs or scatters: else rays skip every question below.
     bool present() const { return present_; }
@@ -41,11 +32,9 @@ public:
 
 private:
     const RenderScene& scene_;
-    int majorantCell_;
-    InstantKeys instants_;  // one ParticipatingMedia per instant where the smoke changes in time, else one for all
+    Instants& instants_;
     HomogeneousMedium global_;
     bool present_;
-    std::map<double, ParticipatingMedia> smoke_;  // by InstantKeys::of
 };
 
 }  // namespace brume

@@ -1,11 +1,12 @@
-// The media light crosses: the smoke at each prepared instant (key frames in time, or one grid for all), the
-// global medium and the mists a path is inside.
+// The media light crosses: the smoke at each instant (key frames in time, or one grid for all), the global
+// medium and the mists a path is inside.
 #include "integrator/media.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <stdexcept>
+#include <thread>
+#include <vector>
 
 #include "integrator/testing.h"
 #include "medium/testing.h"
@@ -51,21 +52,43 @@ RenderSettings globalMedium() {
 
 }  // namespace
 
-// Key frames of density 1 (t = 10 s) and 3 (t = 20 s): each prepared instant has its own smoke, whose
-// transmittance is e^{−.1 ρ 7} (1e-5: exact for even smoke); an instant not prepared is a logic error (rays
-// would be traced through smoke nobody built); keepOnly forgets the others.
-TEST(IntegratorMedia, EachPreparedInstantHasItsOwnSmoke) {
+// Key frames of density 1 (t = 10 s) and 3 (t = 20 s): each instant has its own smoke, built where it is first
+// asked for (no instant needs preparing), whose transmittance is e^{−.1 ρ 7} (1e-5: exact for even smoke),
+// 2 halfway; forgetting the instants before one rebuilds theirs alike when asked again; an instant outside the
+// key frames is an Error naming them.
+TEST(IntegratorMedia, EachInstantHasItsOwnSmoke) {
     RayPathDir dir;
     writeBox(dir, "one.vdb", 1.0f);
     writeBox(dir, "three.vdb", 3.0f);
     Parts parts("void smoke s 4 20 three.vdb 10 one.vdb 0 3 .1 .1 .1\n", at(10));
-    EXPECT_THROW(parts.media.smokeAt(20), std::logic_error);
-    parts.media.prepare(20);
+    EXPECT_NEAR(transmittance(parts, 20), std::exp(-2.1), 1e-5);
     EXPECT_NEAR(transmittance(parts, 10), std::exp(-0.7), 1e-5);
-    EXPECT_NEAR(transmittance(parts, 20), std::exp(-2.1), 1e-5);
-    parts.media.keepOnly(20);
-    EXPECT_THROW(parts.media.smokeAt(10), std::logic_error);
-    EXPECT_NEAR(transmittance(parts, 20), std::exp(-2.1), 1e-5);
+    EXPECT_NEAR(transmittance(parts, 15), std::exp(-1.4), 1e-5);
+    parts.instants.forgetBefore(20);
+    EXPECT_NEAR(transmittance(parts, 10), std::exp(-0.7), 1e-5);
+    EXPECT_EQ(parts.instants.first(), 10);
+    EXPECT_EQ(parts.instants.last(), 20);
+    try {
+        parts.media.smokeAt(25);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("outside its 2 key frames (10 to 20 s"), std::string::npos) << e.what();
+    }
+}
+
+// Threads that ask for instants at once each get the one smoke of their instant.
+TEST(IntegratorMedia, ThreadsAskingAtOnceShareOneSmokePerInstant) {
+    RayPathDir dir;
+    writeBox(dir, "one.vdb", 1.0f);
+    writeBox(dir, "three.vdb", 3.0f);
+    Parts parts("void smoke s 4 20 three.vdb 10 one.vdb 0 3 .1 .1 .1\n", at(10));
+    std::vector<const ParticipatingMedia*> seen(8);
+    std::vector<std::thread> threads;
+    for (size_t i = 0; i < seen.size(); ++i)
+        threads.emplace_back([&, i] { seen[i] = &parts.media.smokeAt(10 + 5 * double(i % 2)); });
+    for (std::thread& t : threads) t.join();
+    for (size_t i = 2; i < seen.size(); ++i) EXPECT_EQ(seen[i], seen[i % 2]) << i;
+    EXPECT_NE(seen[0], seen[1]);
 }
 
 // Smoke of one grid does not change in time: the smoke built once serves every instant, and is kept.
@@ -73,7 +96,7 @@ TEST(IntegratorMedia, StaticSmokeServesEveryInstant) {
     RayPathDir dir;
     writeBox(dir, "one.vdb", 1.0f);
     Parts parts("void smoke s 1 one.vdb 0 3 .1 .1 .1\n", at(0));
-    parts.media.keepOnly(5);
+    parts.instants.forgetBefore(5);
     for (double time : {0.0, 5.0, 123.0}) EXPECT_NEAR(transmittance(parts, time), std::exp(-0.7), 1e-5) << time;
     EXPECT_TRUE(parts.media.present());
 }

@@ -53,6 +53,9 @@ void addRenderOptions(OptionTable& t, RenderSettings& s, bool& irradianceAtHit) 
               else throw Error("-acache: '" + a[0] + "' is neither adaptive nor classic");
           },
           [&s] { return std::string(s.cacheKind == RecordShape::Kind::Classic ? "classic" : "adaptive"); });
+    addRealOption(t, "-at", s.recordLifetime,
+                  "ambient time: the longest window of instants an irradiance cache record serves (s; 0: its own "
+                  "instant alone; Brume's)");
     t.add("-af", 1, "irradiance cache file (Brume's format): records kept between runs and shared",
           [&s](const auto& a) { s.cacheFile = a[0]; });
     t.addUnsupported("-ae", 1, "ambient exclude modifier");

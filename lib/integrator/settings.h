@@ -22,6 +22,7 @@ struct RenderSettings {
     bool skyPortals = true;          // -aP: path-traced diffuse light aims at the sky through windows too
     RecordShape::Kind cacheKind = RecordShape::Kind::Adaptive;  // -acache adaptive|classic
     std::string cacheFile;           // -af: where the cache's records are kept between runs (changes no value)
+    double recordLifetime = 32;      // -at: the longest window of time a record serves (s; 0: its instant alone)
     int ambientWeight = 0;           // -aw (Radiance's weight of -av in its records: no effect)
     double photonSearchRadius = 0;   // -am (no photon maps: no effect)
     Spectrum ambientValue{0.f};      // -av: radiance assumed beyond the last bounce (RGB as given; see inBands)

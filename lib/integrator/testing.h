@@ -57,7 +57,7 @@ public:
 };
 
 // The parts of an Integrator for the scene `text`, around a ConstantTracer of radiance 1, as Integrator's
-// constructor wires them (the settings' instant prepared), and a scratch for the contexts of their paths.
+// constructor wires them, and a scratch for the contexts of their paths.
 struct Parts {
     explicit Parts(const std::string& text, const RenderSettings& s = test::fixedSeed(),
                    const SurfaceCache* surfaceCache = nullptr, const VolumeCache* volumeCache = nullptr)
@@ -65,19 +65,18 @@ struct Parts {
           settings(inBands(s)),
           tracer(Spectrum(1.f)),
           roulette(s.maxReflections, s.minWeight),
-          media(scene.render, settings),
+          instants(scene.render, s.majorantCell),
+          media(scene.render, settings, instants),
           shading(scene.render),
           shadowRays(scene.render, shading, media),
           lights(scene.render, settings, shading, media, shadowRays),
           portals(scene.render, shading, shadowRays, settings.skyPortals),
           patches(scene.render, shading, shadowRays, lights, settings.skyPortals),
           cache(surfaceCache, volumeCache, scene.render, settings, tracer, shading, media, lights, portals, patches,
-                Seeds{s.seed}),
+                Seeds{s.seed}, instants.recordWindows(s.recordLifetime)),
           surfaces(scene.render, settings, lights, portals, patches, cache, tracer, roulette),
           transport(scene.render, settings, lights, cache, tracer, roulette),
-          scratch(scene.render) {
-        media.prepare(instant());
-    }
+          scratch(scene.render) {}
 
     double instant() const { return settings.time.value_or(0); }
     // The context of a work item seeded by `seed`, at the settings' instant.
@@ -103,6 +102,7 @@ struct Parts {
     RenderSettings settings;
     ConstantTracer tracer;
     RussianRoulette roulette;
+    Instants instants;
     Media media;
     HitShading shading;
     ShadowRays shadowRays;

@@ -17,15 +17,13 @@ constexpr int kMaxPasses = 24;  // then items take what paths give where records
 
 std::unique_ptr<SurfaceCache> makeCache(const RenderScene& scene, const RenderSettings& settings) {
     if (!settings.usesCache()) return nullptr;
-    return std::make_unique<SurfaceCache>(SurfaceZones(recordShape(scene, settings)), scene.geometry().origin(),
-                                          InstantKeys(scene.variesInTime()));
+    return std::make_unique<SurfaceCache>(SurfaceZones(recordShape(scene, settings)), scene.geometry().origin());
 }
 
 // Only where some medium is (else no volume records, no cost).
 std::unique_ptr<VolumeCache> makeVolumeCache(const RenderScene& scene, const RenderSettings& settings) {
     if (!settings.usesCache() || (settings.medium.clear() && !scene.hasMists() && scene.smoke().empty())) return nullptr;
-    return std::make_unique<VolumeCache>(VolumeZones(recordShape(scene, settings)), scene.geometry().origin(),
-                                         InstantKeys(scene.variesInTime()));
+    return std::make_unique<VolumeCache>(VolumeZones(recordShape(scene, settings)), scene.geometry().origin());
 }
 
 std::unique_ptr<PersistentCache> openCacheFile(const Scene& scene, const RenderSettings& settings, SurfaceCache* cache,
@@ -67,8 +65,13 @@ Sequence::Sequence(const Scene& scene, const RenderScene& renderScene, const Ren
 
 void Sequence::moveTo(double time) {
     integrator_.moveTo(time);
-    if (cache_) cache_->keepOnly(time);
-    if (volumes_) volumes_->keepOnly(time);
+    if (!cache_) return;
+    if (!cacheFile_) {  // no file keeps the records made: none waits to be saved
+        cache_->takeUnsaved();
+        if (volumes_) volumes_->takeUnsaved();
+    }
+    cache_->forgetBefore(time);
+    if (volumes_) volumes_->forgetBefore(time);
 }
 
 void Sequence::makeRecords(const std::vector<RecordRequest>& requests) {
@@ -79,13 +82,13 @@ void Sequence::makeRecords(const std::vector<RecordRequest>& requests) {
     if (!onSurfaces.empty())
         brume::makeRecords(
             *cache_, onSurfaces, missesToPay,
-            [this](const RecordRequest& q, CacheVisit& visit) { return integrator_.makeRecord(q, scratch_.local(), visit); },
+            [this](const RecordRequest& q, CacheVisit& visit) { return integrator_.makeRecords(q, scratch_.local(), visit); },
             deeper);
     if (!inMedia.empty())
         brume::makeRecords(
             *volumes_, inMedia, missesToPay,
             [this](const RecordRequest& q, CacheVisit& visit) {
-                return integrator_.makeVolumeRecord(q, scratch_.local(), visit);
+                return integrator_.makeVolumeRecords(q, scratch_.local(), visit);
             },
             deeper);
 }
