@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -19,6 +20,7 @@
 #include <glm/geometric.hpp>
 
 #include "cache/record_request.h"
+#include "cache/record_windows.h"
 #include "cache/zone_index.h"
 #include "sampling/random.h"
 #include "spectrum/spectrum.h"
@@ -98,51 +100,89 @@ public:
     }
 
     // Adds records in their order, each reconciled with the older ones of its bounce; `unsaved`: made here,
-    // to be handed to takeUnsaved.
-    void add(std::vector<Record> records, bool unsaved) {
+    // to be handed to takeUnsaved. `opened[i]`, where given, is the request a window from record i may
+    // re-trace (RecordWindows): record i is open.
+    void add(std::vector<Record> records, bool unsaved, std::vector<std::optional<RecordRequest>> opened = {}) {
         size_t before = records_.size();
-        for (Record& r : records) {
-            countSize(r);
+        opened.resize(records.size());
+        for (size_t k = 0; k < records.size(); ++k) {
+            countSize(records[k]);
             if (unsaved) unsaved_.push_back(records_.size());
-            records_.push_back(std::move(r));
+            records_.push_back(std::move(records[k]));
+            opened_.push_back(std::move(opened[k]));
             reconcile(records_.size() - 1);
         }
         size_t indexed = index_.size();
         if (records_.size() - indexed <= std::max(kUnindexedLimit, indexed / 8) && before > 0) return;
         buildIndex();
     }
-    // Forgets the records whose window is over at instant t and that were saved (or not made here), and the
-    // misses counted before t: a run that has moved on to t. The regions are sized by the records kept.
-    void forgetBefore(double t) {
+    // Forgets the records whose window is over at instant t, but for open ones of instants from `openSince`
+    // on, and the misses counted before t: a run that has moved on to t. Those not yet handed to takeUnsaved
+    // still will be. The regions are sized by the records kept.
+    void forgetBefore(double t, double openSince) {
         std::erase_if(regions_, [t](const auto& entry) { return entry.second.first.at.time < t; });
         std::vector<bool> unsaved(records_.size());
         for (size_t i : unsaved_) unsaved[i] = true;
-        auto forgotten = [&](size_t i) { return records_[i].when.overAt(t) && !unsaved[i]; };
+        auto forgotten = [&](size_t i) {
+            return records_[i].when.overAt(t) && !(opened_[i] && records_[i].when.at >= openSince);
+        };
         size_t i = 0;
         while (i < records_.size() && !forgotten(i)) ++i;
         if (i == records_.size()) return;
         std::vector<Record> kept;
+        std::vector<std::optional<RecordRequest>> keptOpened;
         std::vector<size_t> keptUnsaved;
         for (i = 0; i < records_.size(); ++i) {
-            if (forgotten(i)) continue;
+            if (forgotten(i)) {
+                if (unsaved[i]) forgottenUnsaved_.push_back(std::move(records_[i]));
+                continue;
+            }
             if (unsaved[i]) keptUnsaved.push_back(kept.size());
             kept.push_back(std::move(records_[i]));
+            keptOpened.push_back(std::move(opened_[i]));
         }
         records_ = std::move(kept);
+        opened_ = std::move(keptOpened);
         unsaved_ = std::move(keptUnsaved);
         sizes_.clear();
         for (const Record& r : records_) countSize(r);
         buildIndex();
     }
-    // Appends the records added as unsaved since the last call to `out`, in their order.
+    // Appends the records added as unsaved since the last call to `out`, in their order (those forgotten
+    // since first).
     void takeUnsaved(std::vector<Record>& out) {
+        std::move(forgottenUnsaved_.begin(), forgottenUnsaved_.end(), std::back_inserter(out));
+        forgottenUnsaved_.clear();
         for (size_t i : unsaved_) out.push_back(records_[i]);
         unsaved_.clear();
     }
 
+    // The open record (RecordWindows) a window serving the request's instant may start from: of its bounce,
+    // its zone holding the point, reaching its instant (windows.reaches); the latest, then the one weighing
+    // most, then the first. None where there is none.
+    template <class Windows>
+    std::optional<size_t> openFor(const Receiver& at, const Windows& windows) const {
+        std::optional<size_t> best;
+        double bestAt = 0, bestWeight = 0;
+        forEachHolding(at.point, [&](size_t i) {
+            const Record& r = records_[i];
+            if (!opened_[i] || r.level != at.level || !windows.reaches(r.when.at, at.time)) return;
+            double w = kind_.weigh(r, at, nullptr);
+            if (!(w > 0)) return;
+            bool better = !best || r.when.at > bestAt || (r.when.at == bestAt && (w > bestWeight || (w == bestWeight && i < *best)));
+            if (better) best = i, bestAt = r.when.at, bestWeight = w;
+        });
+        return best;
+    }
+    // Open record i and the request it was made for.
+    OpenRecord<Record> open(size_t i) const { return {records_[i], *opened_[i]}; }
+    // Closes open record i: a window has started from it.
+    void close(size_t i) { opened_[i].reset(); }
+
     const std::vector<Record>& records() const { return records_; }
     size_t memoryBytes() const {
-        size_t bytes = records_.capacity() * sizeof(Record) + regions_.size() * (sizeof(Region) + 64);
+        size_t bytes = records_.capacity() * sizeof(Record) + opened_.capacity() * sizeof(opened_[0]) +
+                       regions_.size() * (sizeof(Region) + 64);
         for (const Record& r : records_) bytes += r.heapBytes();
         return bytes;
     }
@@ -224,8 +264,10 @@ private:
     const Kind& kind_;
     dvec3 origin_;
     std::vector<Record> records_;
+    std::vector<std::optional<RecordRequest>> opened_;  // per record: the request a window from it re-traces
     ZoneIndex index_;  // over the zones of records_[0, index_.size())
     std::vector<size_t> unsaved_;
+    std::vector<Record> forgottenUnsaved_;  // forgotten before takeUnsaved handed them out
     // Per bounce: the sum of the log sizes of its records, their count, and the size of the regions misses
     // are counted in that the records' typical size gives; the misses counted per region.
     struct LevelSizes {

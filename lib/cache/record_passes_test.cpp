@@ -20,7 +20,7 @@ size_t recordsMade(float radius) {
     for (int i = 0; i < 200; ++i)
         requests.push_back({Receiver{dvec3(0.6 * i, 0, 0), dvec3(0, 0, 1), 0, 0}, {}, 1, uint64_t(i)});
     std::atomic<size_t> made = 0;  // make runs on all threads
-    auto make = [&](const RecordRequest& q, CacheVisit&) {
+    auto make = [&](const RecordRequest& q, const OpenRecord<SurfaceRecord>*, CacheVisit&) {
         SurfaceRecord r;
         r.point = q.at.point, r.normal = *q.at.normal, r.axis = dvec3(1, 0, 0);
         r.radius[0] = r.radius[1] = radius;
@@ -30,7 +30,8 @@ size_t recordsMade(float radius) {
         ++made;
         return std::vector<SurfaceRecord>{r};
     };
-    makeRecords(cache, requests, [](const RecordRequest&) { return 1; }, make, [](const std::vector<RecordRequest>&) {});
+    makeRecords(cache, requests, [](const RecordRequest&) { return 1; }, RecordWindows(false, 0, 0), make,
+                [](const std::vector<RecordRequest>&) {});
     EXPECT_EQ(cache.size(), made.load());
     return made;
 }

@@ -55,8 +55,11 @@ public:
         return out;
     }
 
-    // Adds records made here, in their order, for takeUnsaved.
-    void insert(std::vector<Record> records) { records_.add(std::move(records), true); }
+    // Adds records made here, in their order, for takeUnsaved; `opened`: the requests open ones were made for
+    // (RecordLayer::add).
+    void insert(std::vector<Record> records, std::vector<std::optional<RecordRequest>> opened = {}) {
+        records_.add(std::move(records), true, std::move(opened));
+    }
     // Adds records kept elsewhere (a cache file), in their order.
     void insertSaved(std::vector<Record> records) { records_.add(std::move(records), false); }
     // The records inserted (not insertSaved) since the last call, in their order.
@@ -65,8 +68,15 @@ public:
         records_.takeUnsaved(out);
         return out;
     }
-    // Forgets the records whose window is over at instant t (RecordLayer::forgetBefore): a run moving on.
-    void forgetBefore(double t) { records_.forgetBefore(t); }
+    // Forgets the records whose window is over at instant t but for open ones of instants from `openSince`
+    // on (RecordLayer::forgetBefore): a run moving on.
+    void forgetBefore(double t, double openSince) { records_.forgetBefore(t, openSince); }
+    // The open record a window serving the receiver's instant may start from (RecordLayer::openFor).
+    std::optional<size_t> openFor(const Receiver& at, const RecordWindows& windows) const {
+        return records_.openFor(at, windows);
+    }
+    OpenRecord<Record> open(size_t i) const { return records_.open(i); }
+    void close(size_t i) { records_.close(i); }
 
     // Every record, in their order.
     const std::vector<Record>& records() const { return records_.records(); }

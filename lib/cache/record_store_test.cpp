@@ -153,7 +153,7 @@ TEST(SurfaceCache, RecordsOfOneInstantServeItAlone) {
     RecordRequest a{at(dvec3(2, 0, 0), dvec3(0, 0, 1), 0, 60), {}, 1, 1}, b{at(dvec3(2, 0, 0), dvec3(0, 0, 1), 0, 90), {}, 1, 2};
     EXPECT_TRUE(cache.accept({a, b}, [](const RecordRequest&) { return 2; }).empty());
     cache.takeUnsaved();
-    cache.forgetBefore(120);
+    cache.forgetBefore(120, 120);
     EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 60), e));
     EXPECT_TRUE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 120), e));
     EXPECT_EQ(cache.size(), 1u);
@@ -180,29 +180,55 @@ TEST(SurfaceCache, AWindowsRecordsInterpolateInTime) {
     EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 4), e));
     EXPECT_FALSE(cache.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, -0.5), e));
     cache.takeUnsaved();
-    cache.forgetBefore(3);
+    cache.forgetBefore(3, 3);
     EXPECT_EQ(cache.size(), 3u);
-    cache.forgetBefore(4);
+    cache.forgetBefore(4, 4);
     EXPECT_EQ(cache.size(), 0u);
 
     SurfaceCache still = cacheOf();
     still.insert({record(dvec3(0), 1, 0.5f, 0.5f)});
     EXPECT_TRUE(still.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, -1e9), e));
     still.takeUnsaved();
-    still.forgetBefore(1e9);
+    still.forgetBefore(1e9, 1e9);
     EXPECT_TRUE(still.lookup(at(dvec3(0), dvec3(0, 0, 1), 0, 1e9), e));
 }
 
 // A run that moves on keeps the records it has not handed out to be saved.
-TEST(SurfaceCache, MovingOnKeepsTheRecordsNotYetSaved) {
+TEST(SurfaceCache, MovingOnStillHandsOutTheRecordsNotYetSaved) {
     SurfaceCache cache = cacheOf();
     SurfaceRecord r = record(dvec3(0), 1, 0.5f, 0.5f);
     r.when = RecordTime::instant(5);
     cache.insert({r});
-    cache.forgetBefore(10);
-    ASSERT_EQ(cache.takeUnsaved().size(), 1u);
-    cache.forgetBefore(10);
+    cache.forgetBefore(10, 10);
     EXPECT_EQ(cache.size(), 0u);
+    ASSERT_EQ(cache.takeUnsaved().size(), 1u);
+    EXPECT_TRUE(cache.takeUnsaved().empty());
+}
+
+// An open record (of one instant, with the request it was made for) is found by later lookups that its zone
+// holds, of its bounce, within -at after it; the latest first. Closed, or older than `openSince` when the run
+// moves on, it is not.
+TEST(SurfaceCache, OpenRecordsStartWindowsForLaterLookupsTheyHold) {
+    SurfaceCache cache = cacheOf();
+    RecordWindows windows(true, 100, 32);
+    SurfaceRecord early = record(dvec3(0), 1, 0.5f, 0.5f), late = record(dvec3(0.1, 0, 0), 2, 0.5f, 0.5f);
+    early.when = RecordTime::instant(5), late.when = RecordTime::instant(8);
+    RecordRequest q{at(dvec3(0), dvec3(0, 0, 1), 0, 5), {}, 1, 77};
+    cache.insert({early, late}, {q, q});
+    EXPECT_EQ(cache.openFor(at(dvec3(0.05, 0, 0), dvec3(0, 0, 1), 0, 20), windows), 1u);
+    EXPECT_EQ(cache.open(1).request.key, 77u);
+    EXPECT_FALSE(cache.openFor(at(dvec3(0.05, 0, 0), dvec3(0, 0, 1), 1, 20), windows));  // another bounce
+    EXPECT_FALSE(cache.openFor(at(dvec3(3, 0, 0), dvec3(0, 0, 1), 0, 20), windows));     // outside the zones
+    EXPECT_EQ(cache.openFor(at(dvec3(0.05, 0, 0), dvec3(0, 0, 1), 0, 7), windows), 0u);  // the later is after 7
+    EXPECT_FALSE(cache.openFor(at(dvec3(0.05, 0, 0), dvec3(0, 0, 1), 0, 45), windows));  // past -at
+    cache.close(1);
+    EXPECT_EQ(cache.openFor(at(dvec3(0.05, 0, 0), dvec3(0, 0, 1), 0, 20), windows), 0u);
+    cache.takeUnsaved();
+    cache.forgetBefore(20, 6);  // the closed one is forgotten, the open one before 6 too
+    EXPECT_EQ(cache.size(), 0u);
+    cache.insert({early}, {q});
+    cache.forgetBefore(20, 4);
+    EXPECT_EQ(cache.size(), 1u);
 }
 
 // Records made here are handed out once to be saved, those loaded from a file never.

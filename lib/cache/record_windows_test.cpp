@@ -1,5 +1,6 @@
-// The windows of time records serve: as long as the light's change allows (-aa), halved from -at down to
-// its 256th, from the instant a record is made; three records at the window's start, middle and end.
+// The windows of time records serve: from an open record of one instant, as long as the light's change
+// allows (-aa), halved from -at down to its 4096th; three records at the window's start, middle and end, and
+// the end again, open for the next window.
 #include "cache/record_windows.h"
 
 #include <gtest/gtest.h>
@@ -23,14 +24,16 @@ struct Kind {
     static void shareZone(std::vector<Light>&) {}
 };
 
-// The records of the window from t of light E(t), -aa .1, and how many were made.
+// The records of the window from an open record of instant t of light E(t), -aa .1, and how many were made
+// (the open record's not counted).
 struct Made {
     std::vector<Light> records;
     int made = 0;
 };
-Made recordsAt(const RecordWindows& windows, double t, const std::function<double(double)>& light) {
+Made windowFrom(const RecordWindows& windows, double t, const std::function<double(double)>& light) {
     Made out;
-    out.records = windows.recordsAt(t, Kind{}, 0.1, [&](double at) {
+    Light open{light(t), RecordTime::instant(t)};
+    out.records = windows.windowFrom(open, Kind{}, 0.1, [&](double at) {
         ++out.made;
         return Light{light(at), {}};
     });
@@ -46,58 +49,76 @@ double lookup(const std::vector<Light>& records, double t) {
 
 }  // namespace
 
-// Where nothing changes in time, one record serves every instant; with -at 0, or at the last instant with
-// data, a record serves its own instant alone.
-TEST(RecordWindows, OneRecordWhereTimeDoesNotCountOrCannotGoOn) {
-    auto flat = [](double) { return 1.0; };
-    Made still = recordsAt(RecordWindows(false, 100, 32), 5, flat);
-    ASSERT_EQ(still.records.size(), 1u);
-    EXPECT_EQ(still.records[0].when.weightAt(-1e9), 1.0);
-    for (auto [windows, t] : {std::pair{RecordWindows(true, 100, 0), 5.0}, {RecordWindows(true, 100, 32), 100.0}}) {
-        Made one = recordsAt(windows, t, flat);
-        ASSERT_EQ(one.records.size(), 1u);
-        EXPECT_EQ(one.records[0].when.weightAt(t), 1.0);
-        EXPECT_EQ(one.records[0].when.weightAt(std::nextafter(t, 1e9)), 0.0);
-    }
+// A record is first made for its instant alone, or for every instant where nothing changes; an open record
+// starts windows that reach instants after its own, within -at and before the last instant with data.
+TEST(RecordWindows, ARecordIsFirstOfItsInstantAlone) {
+    auto one = [](double) { return Light{1, {}}; };
+    EXPECT_EQ(RecordWindows(false, 100, 32).recordAt(5, one).when.weightAt(-1e9), 1.0);
+    Light first = RecordWindows(true, 100, 32).recordAt(5, one);
+    EXPECT_EQ(first.when.weightAt(5), 1.0);
+    EXPECT_EQ(first.when.weightAt(std::nextafter(5.0, 9.0)), 0.0);
+    RecordWindows windows(true, 100, 32);
+    EXPECT_TRUE(windows.opens());
+    EXPECT_TRUE(windows.reaches(5, 6));
+    EXPECT_FALSE(windows.reaches(5, 5));
+    EXPECT_FALSE(windows.reaches(5, 37));
+    EXPECT_FALSE(windows.reaches(100, 101));
+    EXPECT_FALSE(RecordWindows(true, 100, 0).opens());
+    EXPECT_FALSE(RecordWindows(false, 100, 32).opens());
 }
 
-// Light that changes linearly in time is straight over the longest window (three records made, at t, t + 16
-// and t + 32), clipped at the last instant with data; lookups inside it get the light exactly (to rounding).
+// Light that changes linearly in time is straight over the longest window (two records made, at t + 16 and
+// t + 32; the open one is its start), clipped at the last instant with data; lookups inside it get the light
+// exactly (to rounding); its end is made again as a record of its instant alone, for the next window.
 TEST(RecordWindows, LinearLightTakesTheLongestWindow) {
     auto linear = [](double t) { return 2 + 0.1 * t; };
-    Made m = recordsAt(RecordWindows(true, 100, 32), 10, linear);
-    ASSERT_EQ(m.records.size(), 3u);
-    EXPECT_EQ(m.made, 3);
+    Made m = windowFrom(RecordWindows(true, 100, 32), 10, linear);
+    ASSERT_EQ(m.records.size(), 4u);
+    EXPECT_EQ(m.made, 2);
     for (int i = 0; i < 3; ++i) EXPECT_EQ(m.records[i].when.at, 10 + 16 * i);
-    for (double t : {10.0, 13.3, 26.0, 41.9}) EXPECT_NEAR(lookup(m.records, t), linear(t), 1e-12) << t;
-    EXPECT_TRUE(std::isnan(lookup(m.records, 42)));
-    EXPECT_TRUE(std::isnan(lookup(m.records, 9.9)));
-    Made clipped = recordsAt(RecordWindows(true, 20, 32), 10, linear);
-    EXPECT_EQ(clipped.records.back().when.at, 20);
+    std::vector<Light> window(m.records.begin(), m.records.begin() + 3);
+    for (double t : {10.0, 13.3, 26.0, 41.9}) EXPECT_NEAR(lookup(window, t), linear(t), 1e-12) << t;
+    EXPECT_TRUE(std::isnan(lookup(window, 42)));
+    EXPECT_TRUE(std::isnan(lookup(window, 9.9)));
+    EXPECT_EQ(m.records[3].when.weightAt(42), 1.0);
+    EXPECT_EQ(m.records[3].value, linear(42));
+    EXPECT_EQ(windowFrom(RecordWindows(true, 20, 32), 10, linear).records[2].when.at, 20);
 }
 
-// Light E(t) = 1 + (t/10)² from t = 0: the middle record departs from the chord of a window Δ long by Δ²/400,
-// within -aa of the brightest, 1 + Δ²/100, where Δ²/400 ≤ .1 (1 + Δ²/100), Δ ≤ 8.2 s: from 32 s, halved to 16
-// and 8 s (two more records). The interpolation through the three errs by at most a quarter of the chord's
-// departure, E''h²/8 = .04 with h = 4 s, a quarter of -aa of the brightest.
+// Light E(t) = 1 + (t/10)² from t = 0: over a window Δ long the halves' changes differ by Δ²/200, within -aa
+// of the brightest, 1 + Δ²/100, where Δ²/200 ≤ .1 (1 + Δ²/100), Δ ≤ 5 s: from 32 s, halved to 16, 8 and 4 s
+// (three more records). The interpolation through the three errs by at most E''h²/8 = .01 with h = 2 s, an
+// eighth of the halves' difference.
 TEST(RecordWindows, BendingLightHalvesTheWindowUntilItIsStraightWithinTheAccuracy) {
     auto bend = [](double t) { return 1 + t * t / 100; };
-    Made m = recordsAt(RecordWindows(true, 100, 32), 0, bend);
-    ASSERT_EQ(m.records.size(), 3u);
+    Made m = windowFrom(RecordWindows(true, 100, 32), 0, bend);
     EXPECT_EQ(m.made, 5);
-    EXPECT_EQ(m.records.back().when.at, 8);
-    for (double t = 0; t < 8; t += 0.25) EXPECT_NEAR(lookup(m.records, t), bend(t), 0.25 * 0.1 * bend(8)) << t;
+    EXPECT_EQ(m.records[2].when.at, 4);
+    std::vector<Light> window(m.records.begin(), m.records.begin() + 3);
+    for (double t = 0; t < 4; t += 0.25) EXPECT_NEAR(lookup(window, t), bend(t), 0.0101) << t;
+}
+
+// A step anywhere in a window (from 1 to 1.3 at 7 s, inside the last quarter of a window from 0 to 8 s, where
+// the middle record does not see it): the halves' changes, 0 and .3, differ by more than -aa: halved, to
+// windows that end before the step; lookups within -aa of the light everywhere.
+TEST(RecordWindows, AStepInAWindowsHalfIsNotInterpolatedAcross) {
+    auto step = [](double t) { return t < 7 ? 1.0 : 1.3; };
+    Made m = windowFrom(RecordWindows(true, 8, 32), 0, step);
+    std::vector<Light> window(m.records.begin(), m.records.begin() + 3);
+    EXPECT_LE(window[2].when.at, 7);
+    for (double t = 0; t < window[2].when.to; t += 0.01) EXPECT_NEAR(lookup(window, t), step(t), 0.1 * 1.3) << t;
 }
 
 // A step (a door closing at 5 s): windows from before it shrink until they end before it, or, from right
-// before it, are as short as windows get, 32/256 s: the step is never smeared further.
+// before it, are as short as windows get, 32/4096 s: the step is never smeared further.
 TEST(RecordWindows, AStepIsNotSmearedPastItsInstantByMoreThanTheShortestWindow) {
     auto step = [](double t) { return t < 5 ? 1.0 : 3.0; };
     for (double t : {0.0, 3.0, 4.9, 4.99}) {
-        Made m = recordsAt(RecordWindows(true, 100, 32), t, step);
-        double end = m.records.back().when.to;
-        EXPECT_LE(end, std::max(5.0, t + 32.0 / 256)) << t;
+        Made m = windowFrom(RecordWindows(true, 100, 32), t, step);
+        double end = m.records[2].when.to;
+        EXPECT_LE(end, std::max(5.0, t + 32.0 / 4096)) << t;
+        std::vector<Light> window(m.records.begin(), m.records.begin() + 3);
         if (end <= 5)
-            for (double u = t; u < end; u += 0.01) EXPECT_EQ(lookup(m.records, u), 1.0) << t << " " << u;
+            for (double u = t; u < end; u += 0.01) EXPECT_EQ(lookup(window, u), 1.0) << t << " " << u;
     }
 }

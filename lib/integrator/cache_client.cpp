@@ -107,18 +107,23 @@ RecordRequest at(RecordRequest q, double time) {
 }
 }  // namespace
 
-std::vector<SurfaceRecord> CacheClient::makeRecords(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
-    return windows_.recordsAt(q.at.time, cache_->kind(), settings_.ambientAccuracy,
-                              [&](double time) { return recordAt(at(q, time), scratch, visit); });
+std::vector<SurfaceRecord> CacheClient::makeRecords(const RecordRequest& q, const OpenRecord<SurfaceRecord>* open,
+                                                    Scratch& scratch, CacheVisit& visit) const {
+    if (!open) return {windows_.recordAt(q.at.time, [&](double t) { return recordAt(at(q, t), scratch, visit); })};
+    return windows_.windowFrom(open->record, cache_->kind(), settings_.ambientAccuracy,
+                               [&](double t) { return recordAt(at(open->request, t), scratch, visit); });
 }
 
-std::vector<VolumeRecord> CacheClient::makeVolumeRecords(const RecordRequest& q, Scratch& scratch,
-                                                         CacheVisit& visit) const {
-    return windows_.recordsAt(q.at.time, volumes_->kind(), settings_.ambientAccuracy,
-                              [&](double time) { return volumeRecordAt(at(q, time), scratch, visit); });
+std::vector<VolumeRecord> CacheClient::makeVolumeRecords(const RecordRequest& q, const OpenRecord<VolumeRecord>* open,
+                                                         Scratch& scratch, CacheVisit& visit) const {
+    if (!open)
+        return {windows_.recordAt(q.at.time, [&](double t) { return volumeRecordAt(at(q, t), scratch, visit); })};
+    return windows_.windowFrom(open->record, volumes_->kind(), settings_.ambientAccuracy,
+                               [&](double t) { return volumeRecordAt(at(open->request, t), scratch, visit); });
 }
 
 SurfaceRecord CacheClient::recordAt(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+    ++visit.traced;
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
     const dvec3& point = q.at.point;
@@ -146,6 +151,7 @@ SurfaceRecord CacheClient::recordAt(const RecordRequest& q, Scratch& scratch, Ca
 }
 
 VolumeRecord CacheClient::volumeRecordAt(const RecordRequest& q, Scratch& scratch, CacheVisit& visit) const {
+    ++visit.traced;
     RayOutputs outputs;
     PathContext ctx = recordContext(q, scratch, visit, outputs);
     std::vector<SourceSamples> sources(scene_.lights().size());

@@ -27,8 +27,8 @@ public:
         : cache_(cache), volumes_(volumes), scene_(scene), settings_(settings), tracer_(tracer), shading_(shading),
           media_(media), lights_(lights), portals_(portals), patches_(patches), seeds_(seeds), windows_(windows) {}
 
-    // The windows of time the records made from now on serve. Not while records are made.
-    void useWindows(RecordWindows windows) { windows_ = windows; }
+    // The windows of time records serve.
+    const RecordWindows& windows() const { return windows_; }
 
     const SurfaceCache* cache() const { return cache_; }
     const VolumeCache* volumes() const { return volumes_; }
@@ -59,10 +59,12 @@ public:
     int missesToPay(const RecordRequest& request) const {
         return request.at.level == 0 ? 1 : std::max(1, recordDivisions(request));
     }
-    // The records of the window of time holding the request's instant (RecordWindows: one, or three at its
-    // start, middle and end, each by recordAt with the same samples).
-    std::vector<SurfaceRecord> makeRecords(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
-    std::vector<VolumeRecord> makeVolumeRecords(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const;
+    // The records a request calls for (RecordWindows): the record of its instant, or, from `open` (else null),
+    // those of a window, traced with the open record's samples (its request's), each by recordAt.
+    std::vector<SurfaceRecord> makeRecords(const RecordRequest& request, const OpenRecord<SurfaceRecord>* open,
+                                           Scratch& scratch, CacheVisit& visit) const;
+    std::vector<VolumeRecord> makeVolumeRecords(const RecordRequest& request, const OpenRecord<VolumeRecord>* open,
+                                                Scratch& scratch, CacheVisit& visit) const;
 
 private:
     // A record: the radiance of stratified rays over the hemisphere (more passes of them where their standard

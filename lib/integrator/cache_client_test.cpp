@@ -63,7 +63,7 @@ CacheVisit waiting() {
 // A record made in a uniform surrounding of radiance L (the tracer's), at the lookup's point.
 SurfaceRecord uniformRecord(Parts& parts, const Lookup& lookup, CacheVisit& visit) {
     parts.tracer.value = Spectrum(kL);
-    std::vector<SurfaceRecord> records = parts.cache.makeRecords(lookup.request(), parts.scratch, visit);
+    std::vector<SurfaceRecord> records = parts.cache.makeRecords(lookup.request(), nullptr, parts.scratch, visit);
     EXPECT_EQ(records.size(), 1u);  // the scene is static: one record serves every instant
     return records.at(0);
 }
@@ -158,7 +158,7 @@ TEST(CacheClient, ASurfaceRecordsPassesFollowItsStandardErrorAgainstAllItsLight)
         };
         Lookup lookup{parts};
         CacheVisit visit;
-        parts.cache.makeRecords(lookup.request(), parts.scratch, visit);
+        parts.cache.makeRecords(lookup.request(), nullptr, parts.scratch, visit);
         return double(parts.tracer.rays.size());
     };
     const std::string above = "bright polygon over 0 0 12  -.2 -.9 1  -.2 .1 1  .8 .1 1  .8 -.9 1\n";
@@ -181,7 +181,7 @@ TEST(CacheClient, AVolumeRecordsPassesFollowItsStandardError) {
         parts.tracer.rays.clear();
         q.at.level = level;
         CacheVisit visit;
-        VolumeRecord record = parts.cache.makeVolumeRecords(q, parts.scratch, visit).at(0);
+        VolumeRecord record = parts.cache.makeVolumeRecords(q, nullptr, parts.scratch, visit).at(0);
         return std::pair{double(parts.tracer.rays.size()), double(record.meanRadiance()[0])};
     };
     parts.tracer.value = Spectrum(kL);
@@ -224,7 +224,7 @@ TEST(CacheClient, AVolumeRecordsZoneStopsWhereItsEdgeNeedsIt) {
         parts.tracer.value = Spectrum(kL);
         RecordRequest q{Receiver{p, std::nullopt, 1, 0.0}, SurfaceId{}, 1, 9};
         CacheVisit visit;
-        return double(parts.cache.makeVolumeRecords(q, parts.scratch, visit).at(0).radius);
+        return double(parts.cache.makeVolumeRecords(q, nullptr, parts.scratch, visit).at(0).radius);
     };
     EXPECT_NEAR(radius("", dvec3(2, 5, 5)), 0.1, 1e-6);
     EXPECT_NEAR(radius("", dvec3(4.85, 5, 5)), 0.1 / 10.5, 1e-4);

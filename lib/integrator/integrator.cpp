@@ -32,20 +32,12 @@ Integrator::Integrator(const RenderScene& scene, const RenderSettings& settings,
       portals_(scene, shading_, shadowRays_, settings_.skyPortals),
       patches_(scene, shading_, shadowRays_, lights_, settings_.skyPortals),
       cache_(cache, volumes, scene, settings_, *this, shading_, media_, lights_, portals_, patches_, seeds_,
-             instants_.recordWindows(0)),
+             instants_.recordWindows(settings.recordLifetime)),
       surfaces_(scene, settings_, lights_, portals_, patches_, cache_, *this, roulette_),
       mediaTransport_(scene, settings_, lights_, cache_, *this, roulette_) {
     const Bounds3& extent = scene.geometry().extent();
     epsilon_ = 1e-7 * (extent.empty() ? 1.0 : glm::length(extent.hi - extent.lo));
     if (settings.time) checkInstants(scene.smoke(), {&*settings.time, 1});
-}
-
-void Integrator::moveTo(double time) {
-    if (time != instant_) previousInstant_ = instant_, instant_ = time;
-    const double longest = settings_.recordLifetime;
-    bool stepping = previousInstant_ && time > *previousInstant_ && time - *previousInstant_ < longest;
-    cache_.useWindows(instants_.recordWindows(stepping ? longest : 0));
-    instants_.forgetBefore(time);
 }
 
 // Rays given on input may start exactly on a surface (a sensor on the floor); like Radiance, which ignores

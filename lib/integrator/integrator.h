@@ -55,11 +55,9 @@ public:
 
     // The instants its rays are traced at (their smoke, the span with data).
     const Instants& instants() const { return instants_; }
-    // Moves the run to instant `time`: records made from now on serve windows of time from it where the run
-    // has stepped forward by less than -at (a walk's frames); a run at one instant, or whose instants are
-    // further apart, makes records of one instant each (a window would serve one of its instants). Forgets the
-    // smoke of the instants before it. Not while rays are traced.
-    void moveTo(double time);
+    // Forgets the smoke of the instants no record made from now on is traced at: those before `time` but for
+    // the -at seconds before it, where windows may start from (RecordWindows). Not while rays are traced.
+    void moveTo(double time) { instants_.forgetBefore(time - settings_.recordLifetime); }
 
     // Radiance arriving at q.org from direction q.dir (the ray's value), and rtrace's other outputs of the
     // ray; `tree`, if given, receives every ray traced for it.
@@ -86,13 +84,16 @@ public:
 
     // The cache's side of the record passes: what a missed record is worth, and the records of a request.
     int missesToPay(const RecordRequest& request) const { return cache_.missesToPay(request); }
-    std::vector<SurfaceRecord> makeRecords(const RecordRequest& request, Scratch& scratch, CacheVisit& visit) const {
-        return cache_.makeRecords(request, scratch, visit);
+    std::vector<SurfaceRecord> makeRecords(const RecordRequest& request, const OpenRecord<SurfaceRecord>* open,
+                                           Scratch& scratch, CacheVisit& visit) const {
+        return cache_.makeRecords(request, open, scratch, visit);
     }
-    std::vector<VolumeRecord> makeVolumeRecords(const RecordRequest& request, Scratch& scratch,
-                                                CacheVisit& visit) const {
-        return cache_.makeVolumeRecords(request, scratch, visit);
+    std::vector<VolumeRecord> makeVolumeRecords(const RecordRequest& request, const OpenRecord<VolumeRecord>* open,
+                                                Scratch& scratch, CacheVisit& visit) const {
+        return cache_.makeVolumeRecords(request, open, scratch, visit);
     }
+    // The windows of time records serve (-at, and the instants with data).
+    const RecordWindows& recordWindows() const { return cache_.windows(); }
 
     // The seed of the samples of work item `index` (fixed by -u-, else new each run); pictures seed their
     // pixel jitter from it too.
@@ -138,7 +139,6 @@ private:
     double epsilon_;  // offset for sensor points off their surface, relative to the scene size
     RussianRoulette roulette_;
     Instants instants_;
-    std::optional<double> instant_, previousInstant_;  // the run's instant, and the one before (moveTo)
     Media media_;
     HitShading shading_;
     ShadowRays shadowRays_;

@@ -70,8 +70,9 @@ void Sequence::moveTo(double time) {
         cache_->takeUnsaved();
         if (volumes_) volumes_->takeUnsaved();
     }
-    cache_->forgetBefore(time);
-    if (volumes_) volumes_->forgetBefore(time);
+    const double openSince = time - integrator_.settings().recordLifetime;  // windows may start from those
+    cache_->forgetBefore(time, openSince);
+    if (volumes_) volumes_->forgetBefore(time, openSince);
 }
 
 void Sequence::makeRecords(const std::vector<RecordRequest>& requests) {
@@ -79,16 +80,19 @@ void Sequence::makeRecords(const std::vector<RecordRequest>& requests) {
     for (const RecordRequest& q : requests) (q.at.normal ? onSurfaces : inMedia).push_back(q);
     auto missesToPay = [this](const RecordRequest& q) { return integrator_.missesToPay(q); };
     auto deeper = [this](const std::vector<RecordRequest>& more) { makeRecords(more); };
+    const RecordWindows& windows = integrator_.recordWindows();
     if (!onSurfaces.empty())
-        brume::makeRecords(
-            *cache_, onSurfaces, missesToPay,
-            [this](const RecordRequest& q, CacheVisit& visit) { return integrator_.makeRecords(q, scratch_.local(), visit); },
+        tracedRecords_ += brume::makeRecords(
+            *cache_, onSurfaces, missesToPay, windows,
+            [this](const RecordRequest& q, const OpenRecord<SurfaceRecord>* open, CacheVisit& visit) {
+                return integrator_.makeRecords(q, open, scratch_.local(), visit);
+            },
             deeper);
     if (!inMedia.empty())
-        brume::makeRecords(
-            *volumes_, inMedia, missesToPay,
-            [this](const RecordRequest& q, CacheVisit& visit) {
-                return integrator_.makeVolumeRecords(q, scratch_.local(), visit);
+        tracedRecords_ += brume::makeRecords(
+            *volumes_, inMedia, missesToPay, windows,
+            [this](const RecordRequest& q, const OpenRecord<VolumeRecord>* open, CacheVisit& visit) {
+                return integrator_.makeVolumeRecords(q, open, scratch_.local(), visit);
             },
             deeper);
 }

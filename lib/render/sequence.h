@@ -47,6 +47,8 @@ public:
     // Runs work items without the cache, each sampling its paths itself (shared bounces: records would not
     // carry their throughputs).
     void runPaths(size_t count, double time, const std::function<void(size_t, WorkItem&)>& item);
+    // How many records' light the run has traced so far (a window's: two or more, RecordWindows).
+    uint64_t tracedRecords() const { return tracedRecords_; }
     // A frame's picture. Each frame's passes are numbered from the first, as if it were alone: its records
     // are seeded by where its pixels lie, not by the frames before it.
     RenderedPicture render(const SequenceFrame& frame, const PictureSettings& settings, ProgressMeter* progress);
@@ -63,6 +65,7 @@ private:
     std::unique_ptr<PersistentCache> cacheFile_;
     tbb::enumerable_thread_specific<Scratch> scratch_;
     uint64_t passes_ = 0;  // run so far: they seed the records their items ask for
+    uint64_t tracedRecords_ = 0;
 };
 
 }  // namespace brume

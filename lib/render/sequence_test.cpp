@@ -171,11 +171,11 @@ TEST(Sequence, EachFrameIsRenderedAsInAFreshSequence) {
 
 namespace {
 
-// The sensors over the floor: their means of the downward sensors (all indirect light)
-// at each instant of a walk through time, and how often the sensors ran in all (more where records are made).
+// The downward sensors (all of whose light is indirect) at each instant of a walk through time: their means,
+// their values, and how many records' light was traced.
 struct Walk {
     std::vector<double> means;
-    int runs = 0;
+    uint64_t traced = 0;  // records whose light was traced
     std::vector<std::vector<double>> values;
 };
 Walk walk(const TestScene& t, const RenderSettings& s, const std::vector<double>& instants) {
@@ -184,9 +184,9 @@ Walk walk(const TestScene& t, const RenderSettings& s, const std::vector<double>
     for (double time : instants) {
         Sensors sensors(sequence, 169, time);
         w.means.push_back(sensors.mean());
-        w.runs += sensors.runsInAll();
         w.values.push_back(sensors.values);
     }
+    w.traced = sequence.tracedRecords();
     return w;
 }
 
@@ -200,9 +200,10 @@ std::vector<double> instantsFrom(double first, double last, double step) {
 
 // Smoke thickening linearly from 10 to 20 s, the sensors (all of whose light is indirect) at every second: with
 // records serving windows of time (-at 32) the light is within -aa/4 of path tracing's (-ad 1024, its mean over
-// 169 sensors within 0.3 %) plus the cache's own error at one instant (1 %), while the sensors run 40 % fewer
-// times than with records of one instant each (-at 0), which remake them at every instant. (The light falls
-// convexly in time: linear interpolation between a window's records lies above it, by up to 2.4 % here.)
+// 169 sensors within 0.3 %) plus the cache's own error at one instant (1 %), while fewer records are traced
+// than with records of one instant each (-at 0), which remakes them at every instant: 0.59 of them (the light
+// halves in 10 s, and windows of a few seconds serve a few instants each, at two records a window). (The
+// light falls convexly in time: linear interpolation between a window's records lies above it.)
 TEST(Sequence, RecordsServeWindowsOfTimeWithinTheAccuracy) {
     RayPathDir dir;
     TestScene t{smokeInTime(dir)};
@@ -214,7 +215,7 @@ TEST(Sequence, RecordsServeWindowsOfTimeWithinTheAccuracy) {
     Walk reference = walk(t, paths, instants), through = walk(t, windows, instants), each = walk(t, single, instants);
     for (size_t i = 0; i < instants.size(); ++i)
         EXPECT_NEAR(through.means[i], reference.means[i], (0.25 * 0.1 + 0.01) * reference.means[i]) << instants[i];
-    EXPECT_LT(through.runs, 0.6 * each.runs);
+    EXPECT_LT(double(through.traced), 0.7 * double(each.traced));
     EXPECT_LT(reference.means.back(), 0.7 * reference.means.front());  // the smoke does dim the light
 }
 
@@ -240,9 +241,11 @@ TEST(Sequence, StaticScenesGiveTheSameNumbersAtEveryInstant) {
     EXPECT_EQ(later.runsInAll(), 169);
 }
 
-// A step in the smoke (thin until 15 s, thick from 15.1 s): records made before it serve windows that end
-// before it (or are as short as windows get), so that after it the light is the thick smoke's, as with records
-// of one instant each, and before it the thin smoke's (each within 2 %: the caches' own errors).
+// A step in the smoke (thin until 15 s, thick from 15.1 s; the light falls by 58 %): records made before it
+// serve windows that end before it, or straddle it by little enough that their halves' changes differ by at
+// most -aa: a second before it and after it the light is the thin and the thick smoke's, as with records of
+// one instant each (within 2 %: the caches' own errors); at its start, within -aa plus 3 % (the records' own
+// noise, which the halves' changes carry, twice 1.5 %).
 TEST(Sequence, AStepInTheSmokeIsNotSmearedAcrossIt) {
     RayPathDir dir;
     using namespace medium::testing;
@@ -257,6 +260,6 @@ TEST(Sequence, AStepInTheSmokeIsNotSmearedAcrossIt) {
     single.recordLifetime = 0;
     Walk through = walk(t, settings(0.1), instants), each = walk(t, single, instants);
     for (size_t i = 0; i < instants.size(); ++i)
-        EXPECT_NEAR(through.means[i], each.means[i], 0.02 * each.means[i]) << instants[i];
-    EXPECT_LT(each.means.back(), 0.7 * each.means.front());
+        EXPECT_NEAR(through.means[i], each.means[i], (instants[i] == 15 ? 0.13 : 0.02) * each.means[i]) << instants[i];
+    EXPECT_LT(each.means.back(), 0.5 * each.means.front());
 }
