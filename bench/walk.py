@@ -10,7 +10,8 @@ thickens while one walks), frames at even instants (rpict -path -fps), -ab 1.
   time cache  records that serve windows of time (-at 32), at -ad 64, 256
 The reference: path tracing at -ad 1024 of REF_PAIRS pairs of consecutive frames spread over the walk, their
 views read from the frames' headers (kept in results/walk_reference_*.npz, keyed by the case; --remake-reference
-makes them again). Its own error is stated beside the results: the paths' error at -ad 16 scaled by sqrt(16/1024).
+makes them again). Its own error is stated beside the results: the paths' error at -ad 16 scaled by sqrt(16/1024)
+(the -ad part only: at -ms 0 the in-scattering along each view ray is one sample in it too; see bench/README).
 Metrics, on the luminance, over the reference frames (bench/README.md, "A measure of flicker"):
   error    the RMS over pixels and frames of (frame - ref), over the mean luminance of the references;
   flicker  the RMS over pixels and pairs of (frame_t - frame_t-1) - (ref_t - ref_t-1), over the same mean.
