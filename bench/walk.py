@@ -42,8 +42,8 @@ FDS = os.path.join(ROOT, "..", "shared", "data", "fds", "fdsvismap_room_fire", "
 SOOT_TIMES = ",".join(str(t) for t in range(0, 181, 10))
 # The walk over the whole fire: (time, position, direction) at its two ends.
 WALK = [(60.0, (10.6, 3.9, 1.7), (0.8, 0.6, -0.05)), (180.0, (14.0, 8.6, 1.7), (0.5, 0.85, -0.05))]
-# Every pixel traced at its centre (-ps 1 -pj 0), in the reference too: the error is the light's, not the
-# pixel sampling's (rpict's interpolation between samples, and its jitter, put 16 % RMS errors on the edges).
+# Every pixel traced at its centre (-ps 1 -pj 0), in the reference too: frames and references see the same
+# points, and no pixel is interpolated between samples.
 VIEW = ["-vh", "70", "-vv", "55", "-ps", "1", "-pj", "0"]
 WAYS = {
     "paths": [["-aa", "0", "-ad", ad] for ad in ("4", "16")],
