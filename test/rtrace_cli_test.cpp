@@ -488,6 +488,16 @@ TEST_F(RtraceCli, IllegalPrimariesAreRefused) {
     EXPECT_NE(r.err.find("illegal primary chromaticities"), std::string::npos) << r.err;
 }
 
+// A window of time records serve that is negative or endless is refused (an endless one could never be halved).
+TEST_F(RtraceCli, BadRecordWindowsAreRefused) {
+    for (const char* opt : {"-at -1", "-at 1e400"}) {
+        Output r = rtrace(std::string(opt) + " -ab 1 s.rad", "0 0 1 0 0 -1\n");
+        EXPECT_NE(r.status, 0) << opt;
+        EXPECT_EQ(r.out, "") << opt;
+        EXPECT_NE(r.err.find("-at"), std::string::npos) << opt << ": " << r.err;
+    }
+}
+
 // Media options and objects that cannot work are refused with what is wrong; an unknown source in a mist's
 // list is a warning, as in Radiance.
 TEST_F(RtraceCli, BadMediaAreRefused) {

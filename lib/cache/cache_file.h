@@ -10,7 +10,8 @@
 // then blocks, each appended whole by one writer: a 16-byte head (a tag naming the kind of its records, the
 // record count, the CRC-32 of the records, the CRC-32 of the head's first 12 bytes) and the records. Surface
 // records ("SURF"): point, normal, axis as 3 doubles each (positions round-trip exactly), the time as 4
-// doubles (RecordTime: the instant, the window's start and end, the spacing of its records), the two radii as floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
+// doubles (RecordTime: the instant, the window's start and end, the spacing of its records), the two radii as
+// floats, the level as a 32-bit integer, then CHANNELS × 5 floats of values. All
 // numbers are little-endian IEEE 754, as in memory on x86 and ARM. Volume records ("VOLU", whose head
 // holds the records' size in bytes where a surface block's holds their count): point and time as 7
 // doubles, the radius as a float, the level, the number of peaks P and how many of the last are the sources'

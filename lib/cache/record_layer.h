@@ -160,8 +160,7 @@ public:
     // The open record (RecordWindows) a window serving the request's instant may start from: of its bounce,
     // its zone holding the point, reaching its instant (windows.reaches); the latest, then the one weighing
     // most, then the first. None where there is none.
-    template <class Windows>
-    std::optional<size_t> openFor(const Receiver& at, const Windows& windows) const {
+    std::optional<size_t> openFor(const Receiver& at, const RecordWindows& windows) const {
         std::optional<size_t> best;
         double bestAt = 0, bestWeight = 0;
         forEachHolding(at.point, [&](size_t i) {

@@ -1,10 +1,10 @@
-// When a record holds. A record is made at one point for a window of instants: where the scene changes in
-// time, its light is traced at the window's start, middle and end with the same samples (one record each,
-// sharing one zone), and a lookup inside the window interpolates linearly in time between the two whose
-// instants are nearest (each record's weight falls from 1 at its own instant to 0 at its neighbours'), as
-// Ribardière 2010's spatio-temporal records hold three primary records; when the window is over, a record
-// made afresh takes its place (records are replaced, not averaged). Where nothing changes, one record serves
-// every instant.
+// When a record holds: the instant its light is of, and the instants it serves. Where the scene changes in
+// time, a record serves its own instant alone, or a window of them with the other records of its window (the
+// light at the window's start, middle and end traced with the same samples, sharing one zone, as Ribardière
+// 2010's spatio-temporal records hold three primary records; RecordWindows makes them): a lookup inside the
+// window interpolates linearly in time between the two whose instants are nearest, each record's weight
+// falling from 1 at its own instant to 0 at its neighbours'. Where nothing changes, one record serves every
+// instant.
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -9,10 +9,10 @@
 // the three records, halved until they do, down to kHalvings halvings —, and its end is left open in turn.
 // Lookups interpolate linearly between the two records nearest in time: where the light bends evenly they err
 // by about an eighth of -aa; where it turns at once (a kink, a step such as a door closing) by at most -aa,
-// the change of the half it turns in, or it is kept within the shortest window. A chain
-// of windows, the light continuous from one to the next, each costing two records where a record per instant
-// would cost one per frame. A record no later instant needs costs one. Where nothing changes in time, one
-// record serves every instant.
+// the change of the half it turns in, or it is kept within the shortest window. A chain of windows, the light
+// continuous from one to the next, each costing two records where a record per instant would cost one per
+// frame. A record no later instant needs costs one. Where nothing changes in time, one record serves every
+// instant.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -42,6 +42,9 @@ public:
     bool opens() const { return longest_ > 0; }
     // Whether a window from an open record of instant `from` may serve instant t.
     bool reaches(double from, double t) const { return from < t && t < from + longest_ && from < last_; }
+    // The earliest instant a window serving t may start from: open records (and the smoke) of earlier instants
+    // serve a run at t no more.
+    double openSince(double t) const { return t - longest_; }
 
     // The record of instant t, made by make(t): for every instant where nothing changes, else for t alone.
     template <class Make>

@@ -118,7 +118,8 @@ TEST(RecordWindows, AStepIsNotSmearedPastItsInstantByMoreThanTheShortestWindow) 
         double end = m.records[2].when.to;
         EXPECT_LE(end, std::max(5.0, t + 32.0 / 4096)) << t;
         std::vector<Light> window(m.records.begin(), m.records.begin() + 3);
-        if (end <= 5)
+        if (end <= 5) {
             for (double u = t; u < end; u += 0.01) EXPECT_EQ(lookup(window, u), 1.0) << t << " " << u;
+        }
     }
 }

@@ -1,7 +1,7 @@
 // One record of the surface irradiance cache: the indirect irradiance measured at a point of a surface at
-// one instant (serving a window of instants, RecordTime), how it changes nearby (Ward & Heckbert 1992's gradients, second order in rotation), and the
-// elliptic zone where it stands for its neighbours (Ribardière 2010's adaptive records: two tangent axes,
-// each with its own length).
+// one instant (serving a window of instants, RecordTime), how it changes nearby (Ward & Heckbert 1992's
+// gradients, second order in rotation), and the elliptic zone where it stands for its neighbours (Ribardière
+// 2010's adaptive records: two tangent axes, each with its own length).
 #pragma once
 #include <cstdint>
 #include <vector>

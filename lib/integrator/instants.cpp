@@ -9,13 +9,10 @@ Instants::Instants(const RenderScene& scene, int majorantCell)
     : scene_(scene),
       majorantCell_(majorantCell),
       timed_(scene.variesInTime()),
-      first_(-std::numeric_limits<double>::infinity()),
       last_(std::numeric_limits<double>::infinity()) {
     for (const SmokeDescription& s : scene.smoke()) {
         const std::vector<KeyFrame>& frames = s.frames->keyFrames();
-        if (frames.size() < 2) continue;
-        first_ = std::max(first_, frames.front().time);
-        last_ = std::min(last_, frames.back().time);
+        if (frames.size() > 1) last_ = std::min(last_, frames.back().time);
     }
 }
 

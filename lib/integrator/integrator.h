@@ -55,9 +55,9 @@ public:
 
     // The instants its rays are traced at (their smoke, the span with data).
     const Instants& instants() const { return instants_; }
-    // Forgets the smoke of the instants no record made from now on is traced at: those before `time` but for
-    // the -at seconds before it, where windows may start from (RecordWindows). Not while rays are traced.
-    void moveTo(double time) { instants_.forgetBefore(time - settings_.recordLifetime); }
+    // Forgets the smoke of the instants no record made from now on is traced at: those before the earliest a
+    // window serving `time` may start from (RecordWindows::openSince). Not while rays are traced.
+    void moveTo(double time) { instants_.forgetBefore(recordWindows().openSince(time)); }
 
     // Radiance arriving at q.org from direction q.dir (the ray's value), and rtrace's other outputs of the
     // ray; `tree`, if given, receives every ray traced for it.

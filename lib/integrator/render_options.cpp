@@ -177,6 +177,8 @@ void checkRenderSettings(const RenderSettings& s) {
     if (!(std::abs(m.g) < 1)) throw Error("-mg: eccentricity must be between -1 and 1");
     if (!(s.mediumSampling >= 0)) throw Error("-ms: sampling distance must be positive or 0");
     if (s.majorantCell < 0) throw Error("-mc: majorant cell size must be positive or 0");
+    if (!(s.recordLifetime >= 0 && std::isfinite(s.recordLifetime)))
+        throw Error("-at: the longest window of time must be finite and positive or 0");
     if (s.maxReflections <= 0 && !(s.minWeight > 0))
         throw Error("-lw must be positive when -lr is 0 or negative (Russian roulette needs it)");
 }

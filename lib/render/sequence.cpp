@@ -70,7 +70,7 @@ void Sequence::moveTo(double time) {
         cache_->takeUnsaved();
         if (volumes_) volumes_->takeUnsaved();
     }
-    const double openSince = time - integrator_.settings().recordLifetime;  // windows may start from those
+    const double openSince = integrator_.recordWindows().openSince(time);
     cache_->forgetBefore(time, openSince);
     if (volumes_) volumes_->forgetBefore(time, openSince);
 }
